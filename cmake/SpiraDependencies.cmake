@@ -1,0 +1,37 @@
+# Every third-party dependency is found here, once. See the Debian notes in architecture.md.
+find_package(Eigen3 3.3 REQUIRED NO_MODULE) # before CGAL: its find module would shadow the target
+find_package(Threads REQUIRED)
+find_package(TBB REQUIRED)
+find_package(nlohmann_json 3.10 REQUIRED)
+find_package(assimp REQUIRED)
+find_package(urdfdom REQUIRED)
+find_package(OpenCASCADE REQUIRED)
+find_package(CGAL REQUIRED)
+
+# SuiteSparse 5.x in Debian ships no CMake package: find CHOLMOD by hand.
+find_path(CHOLMOD_INCLUDE_DIR cholmod.h PATH_SUFFIXES suitesparse REQUIRED)
+find_library(CHOLMOD_LIBRARY cholmod REQUIRED)
+find_library(SUITESPARSECONFIG_LIBRARY suitesparseconfig REQUIRED)
+add_library(Spira::cholmod INTERFACE IMPORTED)
+set_target_properties(Spira::cholmod PROPERTIES INTERFACE_INCLUDE_DIRECTORIES "${CHOLMOD_INCLUDE_DIR}"
+  INTERFACE_LINK_LIBRARIES "${CHOLMOD_LIBRARY};${SUITESPARSECONFIG_LIBRARY}")
+
+# OpenCASCADE targets carry no include directories in Debian's config.
+add_library(Spira::occt INTERFACE IMPORTED)
+set_target_properties(Spira::occt PROPERTIES INTERFACE_INCLUDE_DIRECTORIES "${OpenCASCADE_INCLUDE_DIR}"
+  INTERFACE_LINK_LIBRARIES "TKernel;TKMath;TKBRep;TKG3d;TKGeomBase;TKGeomAlgo;TKTopAlgo;TKPrim;TKMesh;TKShHealing;TKXSBase;TKSTEP;TKSTEPBase;TKSTEPAttr;TKSTEP209;TKIGES;TKBO")
+
+add_library(Spira::urdfdom INTERFACE IMPORTED)
+set_target_properties(Spira::urdfdom PROPERTIES INTERFACE_INCLUDE_DIRECTORIES "${urdfdom_INCLUDE_DIRS}"
+  INTERFACE_LINK_LIBRARIES "${urdfdom_LIBRARIES}")
+
+if(SPIRA_BUILD_GUI)
+  find_package(Qt5 5.15 REQUIRED COMPONENTS Core Gui Widgets OpenGL Test Svg)
+  find_package(VTK 9.1 REQUIRED COMPONENTS CommonCore CommonDataModel CommonColor FiltersCore FiltersSources
+    FiltersGeneral FiltersModeling InteractionStyle InteractionWidgets RenderingCore RenderingOpenGL2
+    RenderingAnnotation RenderingFreeType RenderingContext2D RenderingContextOpenGL2 ChartsCore ViewsContext2D
+    GUISupportQt IOImage)
+endif()
+if(SPIRA_BUILD_TESTS)
+  find_package(GTest REQUIRED)
+endif()

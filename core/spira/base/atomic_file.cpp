@@ -1,0 +1,110 @@
+#include "spira/base/atomic_file.h"
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+#include <random>
+#include <sstream>
+#include <string>
+
+#include "spira/base/error.h"
+
+namespace fs = std::filesystem;
+
+namespace spira {
+namespace {
+
+std::string errnoText() { return std::strerror(errno); }
+
+fs::path temporarySibling(const fs::path& target)
+{
+  std::random_device rd;
+  std::ostringstream name;
+  name << "." << target.filename().string() << ".tmp" << std::hex << rd();
+  return target.parent_path() / name.str();
+}
+
+}  // namespace
+
+void writeFileAtomically(const fs::path& target, std::string_view bytes)
+{
+  const fs::path dir = target.has_parent_path() ? target.parent_path() : fs::path(".");
+  std::error_code ec;
+  if (!fs::is_directory(dir, ec))
+    throw IoError("cannot write '" + target.string() + "': folder '" + dir.string() + "' does not exist",
+                  "create the folder or choose another output path");
+  const fs::path tmp = temporarySibling(dir / target.filename());
+  const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  if (fd < 0)
+    throw IoError("cannot write '" + target.string() + "': " + errnoText(),
+                  "check that the folder is writable and the disk is not full");
+  const char* p = bytes.data();
+  size_t left = bytes.size();
+  while (left > 0) {
+    const ssize_t n = ::write(fd, p, left);
+    if (n < 0) {
+      if (errno == EINTR) continue;
+      const std::string why = errnoText();
+      ::close(fd);
+      fs::remove(tmp, ec);
+      throw IoError("cannot write '" + target.string() + "': " + why, "check free disk space and permissions");
+    }
+    p += n;
+    left -= static_cast<size_t>(n);
+  }
+  if (::fsync(fd) != 0 || ::close(fd) != 0) {
+    const std::string why = errnoText();
+    fs::remove(tmp, ec);
+    throw IoError("cannot write '" + target.string() + "': " + why, "check free disk space and permissions");
+  }
+  fs::rename(tmp, target, ec);
+  if (ec) {
+    fs::remove(tmp, ec);
+    throw IoError("cannot replace '" + target.string() + "': " + ec.message(),
+                  "check that the file is not read-only");
+  }
+}
+
+void ensureWritableDirectory(const fs::path& dir)
+{
+  std::error_code ec;
+  if (!fs::exists(dir, ec)) {
+    fs::create_directories(dir, ec);
+    if (ec)
+      throw IoError("cannot create output folder '" + dir.string() + "': " + ec.message(),
+                    "choose a folder you can write to");
+  }
+  if (!fs::is_directory(dir, ec))
+    throw IoError("output path '" + dir.string() + "' is not a folder", "choose a folder");
+  const fs::path probe = temporarySibling(dir / ".spira-write-probe");
+  const int fd = ::open(probe.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
+  if (fd < 0)
+    throw IoError("cannot write into output folder '" + dir.string() + "': " + errnoText(),
+                  "choose a folder you can write to");
+  ::close(fd);
+  fs::remove(probe, ec);
+}
+
+std::string readFile(const fs::path& path)
+{
+  std::error_code ec;
+  if (!fs::exists(path, ec)) throw IoError("file '" + path.string() + "' does not exist", "check the path");
+  if (fs::is_directory(path, ec)) throw IoError("'" + path.string() + "' is a folder, not a file", "give a file");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw IoError("cannot open '" + path.string() + "' for reading", "check the file's permissions");
+  std::string data;
+  in.seekg(0, std::ios::end);
+  const auto size = in.tellg();
+  if (size > 0) {
+    data.resize(static_cast<size_t>(size));
+    in.seekg(0);
+    in.read(data.data(), size);
+  }
+  if (!in) throw IoError("cannot read '" + path.string() + "'", "check the file");
+  return data;
+}
+
+}  // namespace spira

@@ -1,0 +1,20 @@
+#pragma once
+
+#include <filesystem>
+#include <string_view>
+
+namespace spira {
+
+// Writes a whole file or nothing: data goes to a temporary file beside the target, which is
+// flushed, synced and renamed over the target. A reader never sees a half-written file and a
+// failure leaves the previous file untouched. Throws IoError with the reason.
+void writeFileAtomically(const std::filesystem::path& target, std::string_view bytes);
+
+// Throws IoError unless `dir` exists (or can be created) and a file can be created in it.
+// Call it before starting work whose output would otherwise be lost at the end.
+void ensureWritableDirectory(const std::filesystem::path& dir);
+
+// Reads a whole file; throws IoError if it is missing or unreadable.
+std::string readFile(const std::filesystem::path& path);
+
+}  // namespace spira
