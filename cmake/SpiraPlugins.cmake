@@ -3,8 +3,13 @@
 # spira_add_plugin() records it, and spira_generate_builtin_plugins() writes the single
 # translation unit that calls them all, so no plugin relies on static-initialiser tricks
 # that a static link would silently drop.
-function(spira_add_plugin NAME)
-  cmake_parse_arguments(P "" "" "SOURCES;LIBRARIES" ${ARGN})
+# Usage: spira_add_plugin(NAME <name> SOURCES ... [LIBRARIES ...])
+function(spira_add_plugin)
+  cmake_parse_arguments(P "" "NAME" "SOURCES;LIBRARIES" ${ARGN})
+  if(NOT P_NAME)
+    message(FATAL_ERROR "spira_add_plugin: NAME is required")
+  endif()
+  set(NAME ${P_NAME})
   set(target spira_plugin_${NAME})
   add_library(${target} STATIC ${P_SOURCES})
   target_link_libraries(${target} PUBLIC spira_core PRIVATE ${P_LIBRARIES})
