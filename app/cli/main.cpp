@@ -1,9 +1,81 @@
+// spira-cli: Spira's headless entry point. Every sub-command maps errors to documented exit
+// codes and prints one line on stderr that says what is wrong and what to do.
 #include <iostream>
+#include <string>
+#include <vector>
 
+#include "cli_common.h"
+#include "spira/base/error.h"
+#include "spira/base/progress.h"
 #include "spira/base/version.h"
+
+namespace {
+
+constexpr const char* kUsageText =
+    "usage: spira-cli <command> [options]\n"
+    "\n"
+    "commands:\n"
+    "  info PART        mesh statistics, validation findings, boundary loops, open/closed class\n"
+    "  plugins          list plugins and their parameter schemas\n"
+    "  field PART --kind geodesic|harmonic -o FILE   per-vertex scalar field as .csv or .vtp\n"
+    "  plan PART -o DIR   plan one continuous spiral: DIR/trajectory.csv and DIR/report.json\n"
+    "  sample NAME -o FILE   write a bundled sample part (open-cylinder, dome, cone) made in code\n"
+    "\n"
+    "options: --help (also after a command), --version\n"
+    "exit codes: 0 success, 2 usage error, 3 bad input, 4 infeasible plan, 1 internal error\n";
+
+int dispatch(const std::string& command, const std::vector<std::string>& rest)
+{
+  using namespace spira::cli;
+  if (command == "info") return cmdInfo(rest);
+  if (command == "plugins") return cmdPlugins(rest);
+  if (command == "sample") return cmdSample(rest);
+  if (command == "plan") return cmdPlan(rest);
+  if (command == "field") return cmdField(rest);
+  throw UsageError("unknown command '" + command + "'", "run 'spira-cli --help' for the list of commands");
+}
+
+}  // namespace
 
 int main(int argc, char** argv)
 {
-  std::cout << "spira-cli " << spira::kVersion << "\n";
-  return 0;
+  using namespace spira::cli;
+  std::vector<std::string> args(argv + 1, argv + argc);
+  if (args.empty() || args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
+    std::cout << kUsageText;
+    return args.empty() ? kUsage : kOk;
+  }
+  if (args[0] == "--version") {
+    std::cout << "spira-cli " << spira::kVersion << "\n";
+    return kOk;
+  }
+  const std::string command = args[0];
+  args.erase(args.begin());
+  try {
+    return dispatch(command, args);
+  } catch (const UsageError& e) {
+    std::cerr << "spira-cli: " << e.what() << " (" << e.hint() << ")\n";
+    return kUsage;
+  } catch (const spira::InfeasibleError& e) {
+    std::cerr << "spira-cli: " << e.fullMessage() << "\n";
+    return kInfeasible;
+  } catch (const spira::InputError& e) {
+    std::cerr << "spira-cli: " << e.fullMessage() << "\n";
+    return kBadInput;
+  } catch (const spira::IoError& e) {
+    std::cerr << "spira-cli: " << e.fullMessage() << "\n";
+    return kBadInput;
+  } catch (const spira::Error& e) {
+    std::cerr << "spira-cli: internal error: " << e.fullMessage() << " (please report this)\n";
+    return kInternal;
+  } catch (const spira::Cancelled&) {
+    std::cerr << "spira-cli: cancelled\n";
+    return kCancelled;
+  } catch (const std::bad_alloc&) {
+    std::cerr << "spira-cli: out of memory (try a coarser mesh or close other programs)\n";
+    return kInternal;
+  } catch (const std::exception& e) {
+    std::cerr << "spira-cli: internal error: " << e.what() << " (please report this)\n";
+    return kInternal;
+  }
 }

@@ -12,13 +12,38 @@ namespace {
 ParamSchema sampleSchema()
 {
   return ParamSchema({
-      {"layer_height", ParamType::Double, 2.0, 0.1, 10.0, "mm", "Layer height", "Nominal deposit height.", "Window", {}},
-      {"points_per_rev", ParamType::Int, std::int64_t{360}, 8.0, 100000.0, "", "Points per revolution",
-       "Generatrix count.", "Discretisation", {}},
+      {"layer_height",
+       ParamType::Double,
+       2.0,
+       0.1,
+       10.0,
+       "mm",
+       "Layer height",
+       "Nominal deposit height.",
+       "Window",
+       {}},
+      {"points_per_rev",
+       ParamType::Int,
+       std::int64_t{360},
+       8.0,
+       100000.0,
+       "",
+       "Points per revolution",
+       "Generatrix count.",
+       "Discretisation",
+       {}},
       {"angle", ParamType::Double, 90.0, -180.0, 180.0, "deg", "Angle", "An angle.", "Geometry", {}},
       {"wfs", ParamType::Double, 2.4, 0.0, 30.0, "m/min", "Wire feed", "Wire-feed speed.", "Process", {}},
-      {"layer_mode", ParamType::Choice, std::string("floor"), {}, {}, "", "Layer mode", "How layers are counted.",
-       "Window", {"floor", "centered"}},
+      {"layer_mode",
+       ParamType::Choice,
+       std::string("floor"),
+       {},
+       {},
+       "",
+       "Layer mode",
+       "How layers are counted.",
+       "Window",
+       {"floor", "centered"}},
       {"smooth", ParamType::Bool, true, {}, {}, "", "Smooth", "Smooth the path.", "Path", {}},
   });
 }
@@ -102,9 +127,9 @@ TEST(ParamCli, FlagsComeFromSchema)
 {
   const auto schema = sampleSchema();
   ParamSet values;
-  const std::vector<std::string> args = {"part.stl",          "--layer-height", "1.5",       "--layer-mode=centered",
-                                         "--no-smooth",       "--json",         "--angle=-30", "--points-per-rev",
-                                         "720"};
+  const std::vector<std::string> args = {
+      "part.stl",    "--layer-height",   "1.5", "--layer-mode=centered", "--no-smooth", "--json",
+      "--angle=-30", "--points-per-rev", "720"};
   const auto rest = consumeParamFlags(args, {FlagTarget{"test", &schema, &values}});
   EXPECT_EQ(rest, (std::vector<std::string>{"part.stl", "--json"}));
   EXPECT_DOUBLE_EQ(values.getDouble("layer_height"), 1.5);
@@ -120,7 +145,8 @@ TEST(ParamCli, BadFlagValuesAreInputErrors)
   ParamSet values;
   EXPECT_THROW(consumeParamFlags({"--layer-height", "abc"}, {FlagTarget{"t", &schema, &values}}), InputError);
   EXPECT_THROW(consumeParamFlags({"--layer-height", "50"}, {FlagTarget{"t", &schema, &values}}), InputError);
-  EXPECT_THROW(consumeParamFlags({"--points-per-rev", "1.5"}, {FlagTarget{"t", &schema, &values}}), InputError);
+  EXPECT_THROW(consumeParamFlags({"--points-per-rev", "1.5"}, {FlagTarget{"t", &schema, &values}}),
+               InputError);
   EXPECT_THROW(consumeParamFlags({"--layer-height"}, {FlagTarget{"t", &schema, &values}}), InputError);
 }
 

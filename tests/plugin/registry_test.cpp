@@ -8,7 +8,10 @@ namespace {
 
 class FakeImporter : public ImporterPlugin {
  public:
-  explicit FakeImporter(std::string id, std::vector<std::string> exts) : id_(std::move(id)), exts_(std::move(exts)) {}
+  explicit FakeImporter(std::string id, std::vector<std::string> exts)
+      : id_(std::move(id)), exts_(std::move(exts))
+  {
+  }
   std::string id() const override { return id_; }
   std::string label() const override { return "Fake"; }
   std::string description() const override { return "Fake importer"; }
@@ -26,8 +29,10 @@ TEST(PluginRegistry, RejectsDuplicateAndMalformedIds)
 {
   PluginRegistry r;
   r.add(std::make_unique<FakeImporter>("import.fake", std::vector<std::string>{"fak"}));
-  EXPECT_THROW(r.add(std::make_unique<FakeImporter>("import.fake", std::vector<std::string>{"x"})), InternalError);
-  EXPECT_THROW(r.add(std::make_unique<FakeImporter>("Import.Fake2", std::vector<std::string>{"x"})), InternalError);
+  EXPECT_THROW(r.add(std::make_unique<FakeImporter>("import.fake", std::vector<std::string>{"x"})),
+               InternalError);
+  EXPECT_THROW(r.add(std::make_unique<FakeImporter>("Import.Fake2", std::vector<std::string>{"x"})),
+               InternalError);
   EXPECT_THROW(r.add(std::make_unique<FakeImporter>("nodot", std::vector<std::string>{"x"})), InternalError);
   EXPECT_EQ(r.all().size(), 1u);
 }

@@ -17,7 +17,10 @@ namespace fs = std::filesystem;
 namespace spira {
 namespace {
 
-std::string errnoText() { return std::strerror(errno); }
+std::string errnoText()
+{
+  return std::strerror(errno);
+}
 
 fs::path temporarySibling(const fs::path& target)
 {
@@ -50,7 +53,8 @@ void writeFileAtomically(const fs::path& target, std::string_view bytes)
       const std::string why = errnoText();
       ::close(fd);
       fs::remove(tmp, ec);
-      throw IoError("cannot write '" + target.string() + "': " + why, "check free disk space and permissions");
+      throw IoError("cannot write '" + target.string() + "': " + why,
+                    "check free disk space and permissions");
     }
     p += n;
     left -= static_cast<size_t>(n);
@@ -92,7 +96,8 @@ std::string readFile(const fs::path& path)
 {
   std::error_code ec;
   if (!fs::exists(path, ec)) throw IoError("file '" + path.string() + "' does not exist", "check the path");
-  if (fs::is_directory(path, ec)) throw IoError("'" + path.string() + "' is a folder, not a file", "give a file");
+  if (fs::is_directory(path, ec))
+    throw IoError("'" + path.string() + "' is a folder, not a file", "give a file");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw IoError("cannot open '" + path.string() + "' for reading", "check the file's permissions");
   std::string data;

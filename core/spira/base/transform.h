@@ -10,7 +10,10 @@ using Transform = Eigen::Isometry3d;
 using Vec3 = Eigen::Vector3d;
 using Mat3 = Eigen::Matrix3d;
 
-inline Transform identityTransform() { return Transform::Identity(); }
+inline Transform identityTransform()
+{
+  return Transform::Identity();
+}
 
 // Translation (mm) followed by intrinsic rotations about Z, Y', X'' (radians): the KUKA A, B, C order.
 Transform transformFromXyzZyx(const Vec3& xyz, double a, double b, double c);

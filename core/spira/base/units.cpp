@@ -5,12 +5,18 @@ namespace spira {
 double millimetresPer(LengthUnit unit)
 {
   switch (unit) {
-    case LengthUnit::Millimetre: return 1.0;
-    case LengthUnit::Centimetre: return 10.0;
-    case LengthUnit::Metre: return 1000.0;
-    case LengthUnit::Inch: return 25.4;
-    case LengthUnit::Foot: return 304.8;
-    case LengthUnit::Micrometre: return 1e-3;
+    case LengthUnit::Millimetre:
+      return 1.0;
+    case LengthUnit::Centimetre:
+      return 10.0;
+    case LengthUnit::Metre:
+      return 1000.0;
+    case LengthUnit::Inch:
+      return 25.4;
+    case LengthUnit::Foot:
+      return 304.8;
+    case LengthUnit::Micrometre:
+      return 1e-3;
   }
   return 1.0;
 }
@@ -18,12 +24,18 @@ double millimetresPer(LengthUnit unit)
 std::string_view lengthUnitSymbol(LengthUnit unit)
 {
   switch (unit) {
-    case LengthUnit::Millimetre: return "mm";
-    case LengthUnit::Centimetre: return "cm";
-    case LengthUnit::Metre: return "m";
-    case LengthUnit::Inch: return "in";
-    case LengthUnit::Foot: return "ft";
-    case LengthUnit::Micrometre: return "um";
+    case LengthUnit::Millimetre:
+      return "mm";
+    case LengthUnit::Centimetre:
+      return "cm";
+    case LengthUnit::Metre:
+      return "m";
+    case LengthUnit::Inch:
+      return "in";
+    case LengthUnit::Foot:
+      return "ft";
+    case LengthUnit::Micrometre:
+      return "um";
   }
   return "mm";
 }

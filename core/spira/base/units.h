@@ -9,8 +9,14 @@ namespace spira {
 // Internal units are millimetres, radians and seconds. Files and the UI may use others;
 // conversion happens once, at the edge, through these helpers.
 constexpr double kPi = 3.14159265358979323846;
-constexpr double degToRad(double deg) { return deg * kPi / 180.0; }
-constexpr double radToDeg(double rad) { return rad * 180.0 / kPi; }
+constexpr double degToRad(double deg)
+{
+  return deg * kPi / 180.0;
+}
+constexpr double radToDeg(double rad)
+{
+  return rad * 180.0 / kPi;
+}
 
 enum class LengthUnit { Millimetre, Centimetre, Metre, Inch, Foot, Micrometre };
 

@@ -4,8 +4,10 @@
 
 namespace spira {
 
-// Analytic test and sample shapes, in mm, outward-facing, welded (shared vertices).
-// `segments` is the count around the axis, `rings` along it.
+// Analytic test and sample shapes, in mm, outward-facing, welded (shared vertices), consistently
+// oriented, without degenerate faces. Vertices lie on the analytic surface to rounding, the first
+// vertex of every ring at angle 0 (+X), and quarter-turn vertices have exact zero coordinates.
+// `segments` is the count around the axis, `rings` along it. Invalid sizes throw InputError.
 
 // Thin-walled open cylinder (a tube surface) around +Z from z = 0 to z = height.
 TriangleMesh makeOpenCylinder(double radius, double height, int segments, int rings);
@@ -15,11 +17,15 @@ TriangleMesh makeOpenCone(double r0, double r1, double height, int segments, int
 // `rings` counts latitude bands from the base to the pole.
 TriangleMesh makeHemisphere(double radius, int segments, int rings);
 // A surface of revolution through the profile points (r_i, z_i), i = 0..n-1, from bottom to top.
-// A last point with r = 0 closes the top at the axis.
+// A last point with r = 0 closes the top at the axis with one pole vertex (a first point with
+// r = 0 closes the bottom the same way). Faces look to the right of the profile's direction in
+// the (r, z) half-plane: outwards for a profile running up the outside of the part.
 TriangleMesh makeRevolved(const std::vector<Eigen::Vector2d>& profile, int segments);
-// A closed tetrahedron (4 faces), useful as the smallest watertight mesh.
+// A closed regular tetrahedron (4 faces) centred on the origin, useful as the smallest watertight mesh.
 TriangleMesh makeTetrahedron(double edge);
-// Picks `segments` and `rings` so that the mean edge length is about `edge` on the shapes above.
+// `segments` (at least 3) so that the edges round a circle of `radius` are about `edge` long.
 int segmentsForEdge(double radius, double edge);
+// `rings` (at least 1) so that the edges along a profile of `length` are about `edge` long.
+int ringsForEdge(double length, double edge);
 
 }  // namespace spira

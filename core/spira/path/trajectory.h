@@ -42,13 +42,17 @@ using Polyline = std::vector<Vec3>;
 
 // The decomposition of a part into generatrices: polylines on the surface from the base to the
 // upper edge (open parts) or the closure point (closed parts), in base order.
+// `normals`, when filled, has the shape of `lines`: one unit surface normal per point. Left empty,
+// the spiral builder estimates normals from neighbouring generatrices (see surface_normals.h).
 struct Generatrices {
   std::vector<Polyline> lines;
+  std::vector<std::vector<Vec3>> normals;
   bool hasClosurePoint = false;
   Vec3 closurePoint = Vec3::Zero();
   bool operator==(const Generatrices& o) const
   {
-    return lines == o.lines && hasClosurePoint == o.hasClosurePoint && closurePoint == o.closurePoint;
+    return lines == o.lines && normals == o.normals && hasClosurePoint == o.hasClosurePoint &&
+           closurePoint == o.closurePoint;
   }
 };
 

@@ -17,12 +17,19 @@ struct ClosureResult {
   std::vector<std::string> warnings;
 };
 
+// What a closure search starts from.
+struct ClosureInput {
+  const TriangleMesh& mesh;
+  std::vector<int> baseVertices;  // the vertices of the lower boundary (all of them: one source set)
+  // The geodesic distance from the base at every vertex, when the caller already has it (the
+  // planner computes it once for the decomposer too); nullptr lets the finder compute it.
+  const std::vector<double>* baseDistance = nullptr;
+};
+
 class ClosureFinderPlugin : public Plugin {
  public:
   PluginKind kind() const override { return PluginKind::ClosureFinder; }
-  // `baseVertices`: the vertices of the lower boundary (all of them, one source set).
-  virtual ClosureResult find(const TriangleMesh& mesh, const std::vector<int>& baseVertices,
-                             const ParamSet& params, Progress& progress) const = 0;
+  virtual ClosureResult find(const ClosureInput& input, const ParamSet& params, Progress& progress) const = 0;
 };
 
 }  // namespace spira

@@ -16,9 +16,14 @@ namespace spira {
 struct DecomposeInput {
   const TriangleMesh& mesh;
   PartClass partClass = PartClass::Unsupported;
-  BoundaryLoop lower;                  // on the substrate
-  std::optional<BoundaryLoop> upper;   // open parts only
-  std::optional<Vec3> closurePoint;    // closed parts: from a closure finder, if already known
+  BoundaryLoop lower;                 // on the substrate
+  std::optional<BoundaryLoop> upper;  // open parts only
+  std::optional<Vec3> closurePoint;   // closed parts: from a closure finder, if already known
+  // Per-vertex scalar field computed upstream (one value per mesh vertex), or nullptr. Closed
+  // parts: geodesic distance from the lower edge; open parts: the harmonic field, 0 on the lower
+  // edge and 1 on the upper one. Field-based decomposers (decomposer.isovalue) need it; the
+  // caller keeps it alive for the duration of the call.
+  const std::vector<double>* field = nullptr;
 };
 
 struct DecomposeResult {

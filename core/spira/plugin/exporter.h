@@ -31,8 +31,8 @@ class ExporterPlugin : public Plugin {
   PluginKind kind() const override { return PluginKind::Exporter; }
   virtual std::string fileDescription() const = 0;  // e.g. "KUKA KRL program (.src/.dat)"
   // Writes into `outDir` (which exists and is writable); all files or none.
-  virtual ExportResult write(const ExportInput& input, const ParamSet& params, const std::filesystem::path& outDir,
-                             Progress& progress) const = 0;
+  virtual ExportResult write(const ExportInput& input, const ParamSet& params,
+                             const std::filesystem::path& outDir, Progress& progress) const = 0;
 };
 
 }  // namespace spira

@@ -17,6 +17,9 @@ namespace spira {
 struct ImportedMesh {
   TriangleMesh mesh;
   std::optional<LengthUnit> unit;  // set when the format states its unit; else millimetres are assumed
+  // The unit the file itself declares, when the importer already converted `mesh` to `unit`
+  // (CAD readers convert while transferring). Reported to the user as the source unit.
+  std::optional<LengthUnit> fileUnit;
   std::vector<std::string> warnings;
 };
 

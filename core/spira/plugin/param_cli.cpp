@@ -11,16 +11,21 @@ namespace {
 std::string valueHint(const ParamDef& d)
 {
   switch (d.type) {
-    case ParamType::Bool: return "";
-    case ParamType::Int: return " N";
-    case ParamType::Double: return d.unit.empty() ? " X" : " X[" + d.unit + "]";
-    case ParamType::String: return " TEXT";
+    case ParamType::Bool:
+      return "";
+    case ParamType::Int:
+      return " N";
+    case ParamType::Double:
+      return d.unit.empty() ? " X" : " X[" + d.unit + "]";
+    case ParamType::String:
+      return " TEXT";
     case ParamType::Choice: {
       std::string c;
       for (const auto& x : d.choices) c += (c.empty() ? "" : "|") + x;
       return " " + c;
     }
-    case ParamType::Path: return " FILE";
+    case ParamType::Path:
+      return " FILE";
   }
   return "";
 }
@@ -56,7 +61,8 @@ std::string flagForKey(const std::string& key)
   return f;
 }
 
-std::vector<std::string> consumeParamFlags(const std::vector<std::string>& args, const std::vector<FlagTarget>& targets)
+std::vector<std::string> consumeParamFlags(const std::vector<std::string>& args,
+                                           const std::vector<FlagTarget>& targets)
 {
   const auto index = flagIndex(targets);
   std::vector<std::string> rest;

@@ -22,7 +22,8 @@ struct FlagTarget {
 // that names a parameter of one of `targets`; a key shared by several targets sets all of
 // them. Returns the arguments it did not consume, in order. Throws InputError for a known
 // flag with a bad value or a missing value.
-std::vector<std::string> consumeParamFlags(const std::vector<std::string>& args, const std::vector<FlagTarget>& targets);
+std::vector<std::string> consumeParamFlags(const std::vector<std::string>& args,
+                                           const std::vector<FlagTarget>& targets);
 
 // Help text for the flags of `targets`, grouped by owner and category: flag, value type, unit,
 // default, range or choices, and the tooltip.

@@ -36,12 +36,16 @@ std::string joinChoices(const std::vector<std::string>& c)
 bool typeMatches(ParamType t, const ParamValue& v)
 {
   switch (t) {
-    case ParamType::Bool: return std::holds_alternative<bool>(v);
-    case ParamType::Int: return std::holds_alternative<std::int64_t>(v);
-    case ParamType::Double: return std::holds_alternative<double>(v) || std::holds_alternative<std::int64_t>(v);
+    case ParamType::Bool:
+      return std::holds_alternative<bool>(v);
+    case ParamType::Int:
+      return std::holds_alternative<std::int64_t>(v);
+    case ParamType::Double:
+      return std::holds_alternative<double>(v) || std::holds_alternative<std::int64_t>(v);
     case ParamType::String:
     case ParamType::Choice:
-    case ParamType::Path: return std::holds_alternative<std::string>(v);
+    case ParamType::Path:
+      return std::holds_alternative<std::string>(v);
   }
   return false;
 }
@@ -58,12 +62,18 @@ double numeric(const ParamValue& v)
 const char* paramTypeName(ParamType t)
 {
   switch (t) {
-    case ParamType::Bool: return "bool";
-    case ParamType::Int: return "int";
-    case ParamType::Double: return "double";
-    case ParamType::String: return "string";
-    case ParamType::Choice: return "choice";
-    case ParamType::Path: return "path";
+    case ParamType::Bool:
+      return "bool";
+    case ParamType::Int:
+      return "int";
+    case ParamType::Double:
+      return "double";
+    case ParamType::String:
+      return "string";
+    case ParamType::Choice:
+      return "choice";
+    case ParamType::Path:
+      return "path";
   }
   return "unknown";
 }
@@ -101,13 +111,15 @@ void ParamSchema::validate(const ParamSet& values) const
 {
   for (const auto& [key, v] : values.values()) {
     const ParamDef* d = find(key);
-    if (!d) throw InputError("unknown parameter '" + key + "'", "check the spelling against the plugin's schema");
+    if (!d)
+      throw InputError("unknown parameter '" + key + "'", "check the spelling against the plugin's schema");
     if (!typeMatches(d->type, v))
       throw InputError("parameter '" + key + "' must be of type " + paramTypeName(d->type),
                        "got '" + paramValueToString(v) + "'");
     if (d->type == ParamType::Int || d->type == ParamType::Double) {
       const double x = numeric(v);
-      if (!std::isfinite(x)) throw InputError("parameter '" + key + "' is not a finite number", "give a number");
+      if (!std::isfinite(x))
+        throw InputError("parameter '" + key + "' is not a finite number", "give a number");
       if ((d->min && x < *d->min) || (d->max && x > *d->max))
         throw InputError("parameter '" + key + "' = " + paramValueToString(v) + " is out of range",
                          "use a value " + describeRange(*d));
@@ -124,7 +136,8 @@ void ParamSchema::validate(const ParamSet& values) const
 ParamValue ParamSchema::parse(const std::string& key, const std::string& text) const
 {
   const ParamDef* d = find(key);
-  if (!d) throw InputError("unknown parameter '" + key + "'", "check the spelling against the plugin's schema");
+  if (!d)
+    throw InputError("unknown parameter '" + key + "'", "check the spelling against the plugin's schema");
   ParamValue v;
   switch (d->type) {
     case ParamType::Bool:
@@ -157,12 +170,15 @@ ParamValue ParamSchema::parse(const std::string& key, const std::string& text) c
         used = 0;
       }
       if (used != text.size() || text.empty() || !std::isfinite(x))
-        throw InputError("parameter '" + key + "' expects a number" + (d->unit.empty() ? "" : " in " + d->unit),
-                         "got '" + text + "'");
+        throw InputError(
+            "parameter '" + key + "' expects a number" + (d->unit.empty() ? "" : " in " + d->unit),
+            "got '" + text + "'");
       v = x;
       break;
     }
-    default: v = text; break;
+    default:
+      v = text;
+      break;
   }
   ParamSet one;
   one.set(key, v);
@@ -185,7 +201,8 @@ std::vector<std::string> ParamSchema::selfCheck() const
         (d.type == ParamType::Double && !std::holds_alternative<double>(d.defaultValue)))
       problems.push_back("key '" + d.key + "' default does not match its type");
     if (d.min && d.max && *d.min > *d.max) problems.push_back("key '" + d.key + "' has min > max");
-    if (d.type == ParamType::Choice && d.choices.empty()) problems.push_back("key '" + d.key + "' has no choices");
+    if (d.type == ParamType::Choice && d.choices.empty())
+      problems.push_back("key '" + d.key + "' has no choices");
     try {
       ParamSet one;
       one.set(d.key, d.defaultValue);
@@ -204,9 +221,9 @@ nlohmann::json ParamSchema::toJson() const
     nlohmann::json j;
     j["key"] = d.key;
     j["type"] = paramTypeName(d.type);
-    j["default"] = nlohmann::json::parse(
-        std::holds_alternative<std::string>(d.defaultValue) ? nlohmann::json(std::get<std::string>(d.defaultValue)).dump()
-                                                            : paramValueToString(d.defaultValue));
+    j["default"] = nlohmann::json::parse(std::holds_alternative<std::string>(d.defaultValue)
+                                             ? nlohmann::json(std::get<std::string>(d.defaultValue)).dump()
+                                             : paramValueToString(d.defaultValue));
     j["min"] = d.min ? nlohmann::json(*d.min) : nlohmann::json(nullptr);
     j["max"] = d.max ? nlohmann::json(*d.max) : nlohmann::json(nullptr);
     j["unit"] = d.unit;
@@ -300,7 +317,8 @@ ParamSet ParamSet::fromJson(const nlohmann::json& j, const ParamSchema* schema)
     else if (v.is_string())
       s.set(it.key(), v.get<std::string>());
     else
-      throw InputError("parameter '" + it.key() + "' has an unsupported JSON type", "use a bool, number or string");
+      throw InputError("parameter '" + it.key() + "' has an unsupported JSON type",
+                       "use a bool, number or string");
   }
   if (schema) schema->validate(s);
   return s;

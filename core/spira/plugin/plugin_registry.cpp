@@ -11,10 +11,14 @@ namespace spira {
 const char* pluginKindName(PluginKind k)
 {
   switch (k) {
-    case PluginKind::Importer: return "importer";
-    case PluginKind::Decomposer: return "decomposer";
-    case PluginKind::ClosureFinder: return "closure";
-    case PluginKind::Exporter: return "exporter";
+    case PluginKind::Importer:
+      return "importer";
+    case PluginKind::Decomposer:
+      return "decomposer";
+    case PluginKind::ClosureFinder:
+      return "closure";
+    case PluginKind::Exporter:
+      return "exporter";
   }
   return "unknown";
 }

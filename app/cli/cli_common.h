@@ -1,0 +1,43 @@
+#pragma once
+
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace spira::cli {
+
+// Exit codes of spira-cli, documented in README.md.
+enum ExitCode : int { kOk = 0, kInternal = 1, kUsage = 2, kBadInput = 3, kInfeasible = 4, kCancelled = 130 };
+
+// A malformed command line (unknown flag, missing argument): exit code 2.
+class UsageError : public std::runtime_error {
+ public:
+  UsageError(const std::string& what, std::string hint) : std::runtime_error(what), hint_(std::move(hint)) {}
+  const std::string& hint() const { return hint_; }
+
+ private:
+  std::string hint_;
+};
+
+// Parsed arguments of one sub-command: positional arguments and the switches it knows.
+struct Args {
+  std::vector<std::string> rest;  // not yet consumed, in order
+
+  // Removes a boolean switch such as "--json"; true when present.
+  bool takeSwitch(const std::string& name);
+  // Removes "--name VALUE" or "--name=VALUE"; empty when absent.
+  std::string takeOption(const std::string& name);
+  // The positional arguments left once every option was taken; throws UsageError naming the
+  // first unknown option, or when the count is outside [minCount, maxCount].
+  std::vector<std::string> finish(const std::string& command, size_t minCount, size_t maxCount) const;
+};
+
+Args splitArgs(const std::vector<std::string>& args);
+
+int cmdInfo(const std::vector<std::string>& args);
+int cmdPlugins(const std::vector<std::string>& args);
+int cmdSample(const std::vector<std::string>& args);
+int cmdPlan(const std::vector<std::string>& args);
+int cmdField(const std::vector<std::string>& args);
+
+}  // namespace spira::cli

@@ -1,0 +1,28 @@
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include "spira/base/progress.h"
+#include "spira/mesh/triangle_mesh.h"
+
+namespace spira {
+
+// The principal generatrix of thesis §2.4.1 step 5. Every contour has the same number n of
+// points, in the same turning sense. From point k of contour c a greedy chain steps to the point
+// of contour c + 1 nearest to it, up to the last contour (and then to the closure point, when
+// there is one). The start point on the first contour whose chain is shortest defines the
+// principal generatrix; generatrix m then uses point (k_c + m) mod n of contour c, where k_c is
+// the principal's index on contour c, so that no two generatrices share a contour point.
+struct PrincipalGeneratrix {
+  std::vector<size_t> index;  // k_c for every contour; index[0] is the start on the first contour
+  double length = 0.0;        // of the principal's chain, mm (closure point included)
+};
+
+// `contours[c]` holds contour c's points in order. Throws InternalError when the contours do not
+// all have the same non-zero number of points.
+PrincipalGeneratrix findPrincipalGeneratrix(const std::vector<std::vector<Vec3>>& contours,
+                                            const std::optional<Vec3>& closurePoint,
+                                            Progress* progress = nullptr);
+
+}  // namespace spira

@@ -1,0 +1,147 @@
+#include "spira/document/cell_record.h"
+
+#include <limits>
+
+#include "spira/base/error.h"
+#include "spira/document/json_codec.h"
+
+namespace spira {
+
+namespace {
+
+constexpr int kCellSchema = 1;
+
+const char* kCellHint = "check the cell file or choose the cell again";
+
+[[noreturn]] void badCell(const std::string& problem)
+{
+  throw InputError("cell: " + problem, kCellHint);
+}
+
+nlohmann::json axisToJson(const CellAxis& a)
+{
+  return {{"urdf_joint", a.urdfJoint}, {"sign", a.sign},      {"offset_deg", a.offsetDeg},
+          {"min_deg", a.minDeg},       {"max_deg", a.maxDeg}, {"max_speed_deg_s", a.maxSpeedDegPerS}};
+}
+
+CellAxis axisFromJson(const nlohmann::json& j, const std::string& what)
+{
+  CellAxis a;
+  a.urdfJoint = codec::stringField(j, "urdf_joint", what);
+  const std::int64_t sign = codec::intField(j, "sign", what);
+  if (sign < std::numeric_limits<int>::min() || sign > std::numeric_limits<int>::max())
+    badCell(what + ": sign " + std::to_string(sign) + " is out of range");
+  a.sign = static_cast<int>(sign);
+  a.offsetDeg = codec::numberField(j, "offset_deg", what);
+  a.minDeg = codec::numberField(j, "min_deg", what);
+  a.maxDeg = codec::numberField(j, "max_deg", what);
+  a.maxSpeedDegPerS = codec::numberField(j, "max_speed_deg_s", what);
+  return a;
+}
+
+std::vector<CellAxis> axesFromJson(const nlohmann::json& j, const char* key)
+{
+  const auto& arr = codec::field(j, key, "cell");
+  if (!arr.is_array()) badCell(std::string("'") + key + "' is not an array");
+  std::vector<CellAxis> axes;
+  for (size_t i = 0; i < arr.size(); ++i)
+    axes.push_back(axisFromJson(arr[i], std::string(key) + "[" + std::to_string(i) + "]"));
+  return axes;
+}
+
+}  // namespace
+
+const char* controllerFamilyName(ControllerFamily c)
+{
+  return c == ControllerFamily::KukaKrc4 ? "kuka_krc4" : "fanuc_r30ib";
+}
+
+const char* partMountingName(PartMounting m)
+{
+  return m == PartMounting::FixedTable ? "fixed_table" : "positioner";
+}
+
+bool ToolRecord::operator==(const ToolRecord& o) const
+{
+  return codec::sameTransform(T_flange_tcp, o.T_flange_tcp) && nozzleRadius == o.nozzleRadius &&
+         nozzleLength == o.nozzleLength && torchBodyRadius == o.torchBodyRadius &&
+         torchBodyLength == o.torchBodyLength;
+}
+
+bool CellAxis::operator==(const CellAxis& o) const
+{
+  return urdfJoint == o.urdfJoint && sign == o.sign && offsetDeg == o.offsetDeg && minDeg == o.minDeg &&
+         maxDeg == o.maxDeg && maxSpeedDegPerS == o.maxSpeedDegPerS;
+}
+
+bool CellRecord::operator==(const CellRecord& o) const
+{
+  return name == o.name && robotUrdf == o.robotUrdf && controller == o.controller &&
+         codec::sameTransform(T_world_robotbase, o.T_world_robotbase) && tool == o.tool &&
+         positionerUrdf == o.positionerUrdf &&
+         codec::sameTransform(T_world_positioner, o.T_world_positioner) && mounting == o.mounting &&
+         robotAxes == o.robotAxes && positionerAxes == o.positionerAxes;
+}
+
+nlohmann::json cellRecordToJson(const CellRecord& c)
+{
+  nlohmann::json j;
+  j["schema"] = kCellSchema;
+  j["name"] = c.name;
+  j["robot_urdf"] = c.robotUrdf;
+  j["controller"] = controllerFamilyName(c.controller);
+  j["T_world_robotbase"] = codec::transformToJson(c.T_world_robotbase);
+  j["tool"] = {{"T_flange_tcp", codec::transformToJson(c.tool.T_flange_tcp)},
+               {"nozzle_radius", c.tool.nozzleRadius},
+               {"nozzle_length", c.tool.nozzleLength},
+               {"torch_body_radius", c.tool.torchBodyRadius},
+               {"torch_body_length", c.tool.torchBodyLength}};
+  j["positioner_urdf"] = c.positionerUrdf;
+  j["T_world_positioner"] = codec::transformToJson(c.T_world_positioner);
+  j["mounting"] = partMountingName(c.mounting);
+  j["robot_axes"] = nlohmann::json::array();
+  for (const auto& a : c.robotAxes) j["robot_axes"].push_back(axisToJson(a));
+  j["positioner_axes"] = nlohmann::json::array();
+  for (const auto& a : c.positionerAxes) j["positioner_axes"].push_back(axisToJson(a));
+  return j;
+}
+
+CellRecord cellRecordFromJson(const nlohmann::json& j)
+{
+  const std::string what = "cell";
+  codec::checkSchema(j, kCellSchema, what);
+  CellRecord c;
+  c.name = codec::stringField(j, "name", what);
+  c.robotUrdf = codec::stringField(j, "robot_urdf", what);
+  const std::string controller = codec::stringField(j, "controller", what);
+  if (controller == controllerFamilyName(ControllerFamily::KukaKrc4))
+    c.controller = ControllerFamily::KukaKrc4;
+  else if (controller == controllerFamilyName(ControllerFamily::FanucR30iB))
+    c.controller = ControllerFamily::FanucR30iB;
+  else
+    badCell("unknown controller '" + controller + "' (use kuka_krc4 or fanuc_r30ib)");
+  c.T_world_robotbase =
+      codec::transformFromJson(codec::field(j, "T_world_robotbase", what), "cell T_world_robotbase");
+  const auto& tool = codec::field(j, "tool", what);
+  c.tool.T_flange_tcp =
+      codec::transformFromJson(codec::field(tool, "T_flange_tcp", "cell tool"), "cell T_flange_tcp");
+  c.tool.nozzleRadius = codec::numberField(tool, "nozzle_radius", "cell tool");
+  c.tool.nozzleLength = codec::numberField(tool, "nozzle_length", "cell tool");
+  c.tool.torchBodyRadius = codec::numberField(tool, "torch_body_radius", "cell tool");
+  c.tool.torchBodyLength = codec::numberField(tool, "torch_body_length", "cell tool");
+  c.positionerUrdf = codec::stringField(j, "positioner_urdf", what);
+  c.T_world_positioner =
+      codec::transformFromJson(codec::field(j, "T_world_positioner", what), "cell T_world_positioner");
+  const std::string mounting = codec::stringField(j, "mounting", what);
+  if (mounting == partMountingName(PartMounting::FixedTable))
+    c.mounting = PartMounting::FixedTable;
+  else if (mounting == partMountingName(PartMounting::Positioner))
+    c.mounting = PartMounting::Positioner;
+  else
+    badCell("unknown mounting '" + mounting + "' (use fixed_table or positioner)");
+  c.robotAxes = axesFromJson(j, "robot_axes");
+  c.positionerAxes = axesFromJson(j, "positioner_axes");
+  return c;
+}
+
+}  // namespace spira

@@ -1,0 +1,77 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <nlohmann/json_fwd.hpp>
+
+#include "spira/base/transform.h"
+
+namespace spira {
+
+// The persisted, editable description of the robot cell. It holds what the user chose and typed
+// (file paths, frames, tool sizes, axis mapping and limits); the kinematic model is built from it
+// elsewhere. Angles here are in degrees because they mirror controller and data-sheet values;
+// convert with degToRad where they are used. Lengths are mm.
+
+enum class ControllerFamily { KukaKrc4, FanucR30iB };
+const char* controllerFamilyName(ControllerFamily c);  // "kuka_krc4", "fanuc_r30ib"
+
+enum class PartMounting { FixedTable, Positioner };
+const char* partMountingName(PartMounting m);  // "fixed_table", "positioner"
+
+// The welding torch on the flange.
+struct ToolRecord {
+  // TCP frame -> flange frame (p_flange = T_flange_tcp * p_tcp). The TCP z axis points out of the
+  // nozzle, along the wire.
+  Transform T_flange_tcp = Transform::Identity();
+  double nozzleRadius = 8.0;       // mm
+  double nozzleLength = 25.0;      // mm, from the TCP back along -z
+  double torchBodyRadius = 20.0;   // mm
+  double torchBodyLength = 150.0;  // mm, behind the nozzle
+
+  bool operator==(const ToolRecord& o) const;
+  bool operator!=(const ToolRecord& o) const { return !(*this == o); }
+};
+
+// One controller axis (A1..A6, then external axes E1..): which URDF joint drives it and how the
+// controller's angle relates to the URDF angle (q_urdf = sign * (q_controller + offsetDeg)),
+// with the controller's software limits.
+struct CellAxis {
+  std::string urdfJoint;
+  int sign = 1;  // +1 or -1
+  double offsetDeg = 0.0;
+  double minDeg = -180.0;
+  double maxDeg = 180.0;
+  double maxSpeedDegPerS = 100.0;
+
+  bool operator==(const CellAxis& o) const;
+  bool operator!=(const CellAxis& o) const { return !(*this == o); }
+};
+
+struct CellRecord {
+  std::string name;
+  std::string robotUrdf;  // path of the robot URDF
+  ControllerFamily controller = ControllerFamily::KukaKrc4;
+  // Robot base frame -> world frame (p_world = T_world_robotbase * p_base).
+  Transform T_world_robotbase = Transform::Identity();
+  ToolRecord tool;
+  std::string positionerUrdf;  // empty: no positioner
+  // Positioner base frame -> world frame.
+  Transform T_world_positioner = Transform::Identity();
+  PartMounting mounting = PartMounting::FixedTable;
+  std::vector<CellAxis> robotAxes;       // controller order A1..A6
+  std::vector<CellAxis> positionerAxes;  // controller order E1..
+
+  bool hasPositioner() const { return !positionerUrdf.empty(); }
+
+  bool operator==(const CellRecord& o) const;
+  bool operator!=(const CellRecord& o) const { return !(*this == o); }
+};
+
+// JSON form (also usable as a stand-alone cell file). Transforms are 16 numbers, row-major.
+// Throws InputError naming the bad field.
+nlohmann::json cellRecordToJson(const CellRecord& c);
+CellRecord cellRecordFromJson(const nlohmann::json& j);
+
+}  // namespace spira

@@ -1,0 +1,37 @@
+#pragma once
+
+#include <map>
+#include <string>
+
+#include <nlohmann/json_fwd.hpp>
+
+#include "spira/plugin/parameter.h"
+
+namespace spira {
+
+// What the user chose for planning: the strategies and every parameter value, stored by
+// section. A section is a plugin id ("decomposer.isovalue", "export.krl") or one of the
+// built-in sections below. Values are stored as the user set them; missing keys take the
+// schema default when read through ParamSet::withDefaults.
+struct PlanSettings {
+  static constexpr const char* kProcessSection = "process";  // process window (speeds, heights)
+  static constexpr const char* kSpiralSection = "spiral";    // spiral construction
+  static constexpr const char* kDefaultDecomposer = "decomposer.isovalue";
+  static constexpr const char* kDefaultClosureFinder = "closure.max_min_geodesic";
+
+  std::string decomposerId = kDefaultDecomposer;
+  std::string closureFinderId = kDefaultClosureFinder;
+  std::map<std::string, ParamSet> params;
+
+  // The stored values of `section` (empty when none are stored).
+  ParamSet section(const std::string& name) const;
+
+  // Sections stored empty compare equal to absent ones.
+  bool operator==(const PlanSettings& o) const;
+  bool operator!=(const PlanSettings& o) const { return !(*this == o); }
+};
+
+nlohmann::json planSettingsToJson(const PlanSettings& s);
+PlanSettings planSettingsFromJson(const nlohmann::json& j);  // throws InputError
+
+}  // namespace spira

@@ -1,0 +1,177 @@
+#include "spira/mesh/mesh_primitives.h"
+
+#include <cmath>
+#include <string>
+
+#include "spira/base/error.h"
+#include "spira/base/units.h"
+
+namespace spira {
+
+namespace {
+
+// cos and sin of 2*pi*j/n, exact at the quarter turns, so vertices on the axes have exact zeros.
+void unitCircle(int j, int n, double& c, double& s)
+{
+  if ((4 * j) % n == 0) {
+    static const double kCos[4] = {1.0, 0.0, -1.0, 0.0};
+    static const double kSin[4] = {0.0, 1.0, 0.0, -1.0};
+    const int q = (4 * j / n) % 4;
+    c = kCos[q];
+    s = kSin[q];
+    return;
+  }
+  const double a = 2.0 * kPi * static_cast<double>(j) / static_cast<double>(n);
+  c = std::cos(a);
+  s = std::sin(a);
+}
+
+void require(bool ok, const std::string& what, const std::string& hint)
+{
+  if (!ok) throw InputError(what, hint);
+}
+
+void requirePositive(double v, const char* name)
+{
+  require(std::isfinite(v) && v > 0.0,
+          std::string(name) + " must be a positive length, not " + std::to_string(v),
+          "give a size in millimetres greater than zero");
+}
+
+void requireCounts(int segments, int rings)
+{
+  require(segments >= 3, "a surface of revolution needs at least 3 segments, not " + std::to_string(segments),
+          "use 3 or more segments around the axis");
+  require(rings >= 1, "a surface of revolution needs at least 1 ring, not " + std::to_string(rings),
+          "use 1 or more rings along the axis");
+}
+
+// Exactly `to` at i == n, so rims land exactly on their nominal height.
+double lerp(double from, double to, int i, int n)
+{
+  return i == n ? to : from + (to - from) * static_cast<double>(i) / static_cast<double>(n);
+}
+
+}  // namespace
+
+TriangleMesh makeRevolved(const std::vector<Eigen::Vector2d>& profile, int segments)
+{
+  requireCounts(segments, 1);
+  const int n = static_cast<int>(profile.size());
+  require(n >= 2, "a revolved profile needs at least 2 points, not " + std::to_string(n),
+          "give the profile as (r, z) points from bottom to top");
+  for (int i = 0; i < n; ++i) {
+    const Eigen::Vector2d& p = profile[i];
+    require(p.allFinite() && p.x() >= 0.0,
+            "profile point " + std::to_string(i) + " is not a finite point with radius >= 0",
+            "give radii >= 0 and finite heights in millimetres");
+    require(p.x() > 0.0 || i == 0 || i == n - 1,
+            "profile point " + std::to_string(i) + " lies on the axis between other points",
+            "only the first and last profile points may have radius 0 (they close the surface at a pole)");
+    require(i == 0 || p != profile[i - 1],
+            "profile points " + std::to_string(i - 1) + " and " + std::to_string(i) + " are the same",
+            "remove repeated profile points");
+  }
+  require(profile[0].x() > 0.0 || profile[n - 1].x() > 0.0 || n > 2, "the profile runs along the axis",
+          "give at least one point off the axis");
+
+  TriangleMesh m;
+  std::vector<int> rowStart(n);
+  for (int i = 0; i < n; ++i) {
+    rowStart[i] = static_cast<int>(m.vertices.size());
+    const double r = profile[i].x(), z = profile[i].y();
+    if (r == 0.0) {
+      m.vertices.emplace_back(0.0, 0.0, z);  // pole
+      continue;
+    }
+    for (int j = 0; j < segments; ++j) {
+      double c, s;
+      unitCircle(j, segments, c, s);
+      m.vertices.emplace_back(r * c, r * s, z);
+    }
+  }
+  // Quad (a, b) on row i, (d, c) on row i + 1, b and c one step further round: (a, b, c) and
+  // (a, c, d) face to the right of the profile's direction, so outwards for a profile running up
+  // the outside. At a pole the quad collapses into one triangle.
+  for (int i = 0; i + 1 < n; ++i) {
+    const bool poleBelow = profile[i].x() == 0.0, poleAbove = profile[i + 1].x() == 0.0;
+    for (int j = 0; j < segments; ++j) {
+      const int j1 = (j + 1) % segments;
+      const int a = poleBelow ? rowStart[i] : rowStart[i] + j;
+      const int b = poleBelow ? rowStart[i] : rowStart[i] + j1;
+      const int c = poleAbove ? rowStart[i + 1] : rowStart[i + 1] + j1;
+      const int d = poleAbove ? rowStart[i + 1] : rowStart[i + 1] + j;
+      if (!poleBelow) m.faces.push_back({a, b, c});
+      if (!poleAbove) m.faces.push_back({a, c, d});
+    }
+  }
+  return m;
+}
+
+TriangleMesh makeOpenCylinder(double radius, double height, int segments, int rings)
+{
+  return makeOpenCone(radius, radius, height, segments, rings);
+}
+
+TriangleMesh makeOpenCone(double r0, double r1, double height, int segments, int rings)
+{
+  requireCounts(segments, rings);
+  requirePositive(height, "height");
+  require(std::isfinite(r0) && std::isfinite(r1) && r0 >= 0.0 && r1 >= 0.0 && (r0 > 0.0 || r1 > 0.0),
+          "cone radii " + std::to_string(r0) + " and " + std::to_string(r1) + " are not valid",
+          "give radii >= 0 with at least one of them greater than zero");
+  std::vector<Eigen::Vector2d> profile;
+  for (int i = 0; i <= rings; ++i) profile.emplace_back(lerp(r0, r1, i, rings), lerp(0.0, height, i, rings));
+  return makeRevolved(profile, segments);
+}
+
+TriangleMesh makeHemisphere(double radius, int segments, int rings)
+{
+  requireCounts(segments, rings);
+  requirePositive(radius, "radius");
+  std::vector<Eigen::Vector2d> profile;
+  profile.emplace_back(radius, 0.0);
+  for (int i = 1; i < rings; ++i) {
+    const double phi = 0.5 * kPi * static_cast<double>(i) / static_cast<double>(rings);
+    profile.emplace_back(radius * std::cos(phi), radius * std::sin(phi));
+  }
+  profile.emplace_back(0.0, radius);
+  return makeRevolved(profile, segments);
+}
+
+TriangleMesh makeTetrahedron(double edge)
+{
+  requirePositive(edge, "edge");
+  // Alternate corners of a cube of side 2 have edges 2*sqrt(2).
+  const double s = edge / (2.0 * std::sqrt(2.0));
+  TriangleMesh m;
+  m.vertices = {Vec3(s, s, s), Vec3(s, -s, -s), Vec3(-s, s, -s), Vec3(-s, -s, s)};
+  m.faces = {{0, 1, 2}, {1, 0, 3}, {2, 1, 3}, {0, 2, 3}};
+  return m;
+}
+
+int segmentsForEdge(double radius, double edge)
+{
+  requirePositive(radius, "radius");
+  requirePositive(edge, "edge");
+  const double n = std::round(2.0 * kPi * radius / edge);
+  require(n < 1e8,
+          "an edge of " + std::to_string(edge) + " mm on a radius of " + std::to_string(radius) +
+              " mm needs too many segments",
+          "choose a longer edge");
+  return std::max(3, static_cast<int>(n));
+}
+
+int ringsForEdge(double length, double edge)
+{
+  requirePositive(length, "length");
+  requirePositive(edge, "edge");
+  const double n = std::round(length / edge);
+  require(n < 1e8,
+          "an edge of " + std::to_string(edge) + " mm along " + std::to_string(length) +
+              " mm needs too many rings",
+          "choose a longer edge");
+  return std::max(1, static_cast<int>(n));
+}
+
+}  // namespace spira

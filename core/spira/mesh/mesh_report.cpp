@@ -1,0 +1,191 @@
+#include "spira/mesh/mesh_report.h"
+
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+namespace spira {
+
+namespace {
+
+std::string num(double v)
+{
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.6g", v);
+  return buf;
+}
+
+std::string point(const Vec3& p)
+{
+  return "(" + num(p.x()) + ", " + num(p.y()) + ", " + num(p.z()) + ")";
+}
+
+// Human-readable issue names for the text report; meshIssueName() gives the stable JSON keys.
+const char* issueLabel(MeshIssueKind kind)
+{
+  switch (kind) {
+    case MeshIssueKind::NonFiniteCoordinate:
+      return "non-finite vertex coordinates";
+    case MeshIssueKind::DegenerateFace:
+      return "degenerate faces (repeated vertex or zero area)";
+    case MeshIssueKind::DuplicateFace:
+      return "duplicate faces";
+    case MeshIssueKind::NonManifoldEdge:
+      return "non-manifold edges (more than two faces)";
+    case MeshIssueKind::NonManifoldVertex:
+      return "non-manifold vertices (faces touch only at the vertex)";
+    case MeshIssueKind::InconsistentOrientation:
+      return "faces with inconsistent orientation";
+  }
+  return "unknown issue";
+}
+
+const char* elementWord(MeshIssueKind kind)
+{
+  switch (kind) {
+    case MeshIssueKind::NonFiniteCoordinate:
+    case MeshIssueKind::NonManifoldVertex:
+      return "vertex";
+    case MeshIssueKind::NonManifoldEdge:
+      return "edge of face";
+    default:
+      return "face";
+  }
+}
+
+nlohmann::json jsonPoint(const Vec3& p)
+{
+  return nlohmann::json::array({p.x(), p.y(), p.z()});
+}
+
+}  // namespace
+
+const char* meshIssueName(MeshIssueKind kind)
+{
+  switch (kind) {
+    case MeshIssueKind::NonFiniteCoordinate:
+      return "non_finite_coordinate";
+    case MeshIssueKind::DegenerateFace:
+      return "degenerate_face";
+    case MeshIssueKind::DuplicateFace:
+      return "duplicate_face";
+    case MeshIssueKind::NonManifoldEdge:
+      return "non_manifold_edge";
+    case MeshIssueKind::NonManifoldVertex:
+      return "non_manifold_vertex";
+    case MeshIssueKind::InconsistentOrientation:
+      return "inconsistent_orientation";
+  }
+  return "unknown";
+}
+
+const char* partClassName(PartClass c)
+{
+  switch (c) {
+    case PartClass::Open:
+      return "open";
+    case PartClass::Closed:
+      return "closed";
+    case PartClass::Unsupported:
+      return "unsupported";
+  }
+  return "unsupported";
+}
+
+const MeshIssue* MeshReport::issue(MeshIssueKind k) const
+{
+  for (const MeshIssue& i : issues)
+    if (i.kind == k) return &i;
+  return nullptr;
+}
+
+bool MeshReport::hasIssue(MeshIssueKind k) const
+{
+  return issueCount(k) > 0;
+}
+
+size_t MeshReport::issueCount(MeshIssueKind k) const
+{
+  const MeshIssue* i = issue(k);
+  return i ? i->count : 0;
+}
+
+bool MeshReport::isPlannable() const
+{
+  return !hasIssue(MeshIssueKind::NonFiniteCoordinate) && !hasIssue(MeshIssueKind::NonManifoldEdge) &&
+         !hasIssue(MeshIssueKind::NonManifoldVertex) && !hasIssue(MeshIssueKind::InconsistentOrientation);
+}
+
+std::string MeshReport::toText() const
+{
+  std::ostringstream s;
+  s << "Mesh: " << vertexCount << " vertices, " << faceCount << " faces, " << edgeCount << " edges\n";
+  if (bounds.empty()) {
+    s << "Bounding box: empty\n";
+  } else {
+    const Vec3 size = bounds.size();
+    s << "Bounding box: x " << num(bounds.min.x()) << " .. " << num(bounds.max.x()) << ", y "
+      << num(bounds.min.y()) << " .. " << num(bounds.max.y()) << ", z " << num(bounds.min.z()) << " .. "
+      << num(bounds.max.z()) << " mm (size " << num(size.x()) << " x " << num(size.y()) << " x "
+      << num(size.z()) << " mm)\n";
+  }
+  s << "Surface area: " << num(area) << " mm^2; mean edge length " << num(meanEdgeLength) << " mm\n";
+  if (issues.empty()) s << "Issues: none\n";
+  for (const MeshIssue& i : issues) {
+    s << "Issue: " << i.count << " " << issueLabel(i.kind);
+    if (i.count > i.elements.size()) s << "; the first " << i.elements.size() << ":";
+    s << "\n";
+    for (size_t k = 0; k < i.elements.size(); ++k)
+      s << "  " << elementWord(i.kind) << " " << i.elements[k] << " at " << point(i.positions[k]) << " mm\n";
+  }
+  s << "Boundary loops: " << boundaryLoops.size() << "\n";
+  for (size_t k = 0; k < boundaryLoops.size(); ++k) {
+    const BoundaryLoop& l = boundaryLoops[k];
+    s << "  loop " << k + 1 << ": " << l.vertices.size() << " vertices, length " << num(l.length) << " mm, z "
+      << num(l.zMin) << " .. " << num(l.zMax) << " mm" << (l.closed ? "" : " (not closed)") << "\n";
+  }
+  s << "Connected components: " << componentCount << "\n";
+  s << "Part class: " << partClassName(partClass) << " - " << classReason << "\n";
+  s << "Plannable mesh: " << (isPlannable() ? "yes" : "no") << "\n";
+  return s.str();
+}
+
+nlohmann::json MeshReport::toJson() const
+{
+  nlohmann::json j;
+  j["vertex_count"] = vertexCount;
+  j["face_count"] = faceCount;
+  j["edge_count"] = edgeCount;
+  j["bounds_mm"] = bounds.empty()
+                       ? nlohmann::json(nullptr)
+                       : nlohmann::json{{"min", jsonPoint(bounds.min)}, {"max", jsonPoint(bounds.max)}};
+  j["area_mm2"] = area;
+  j["mean_edge_length_mm"] = meanEdgeLength;
+  nlohmann::json list = nlohmann::json::array();
+  for (const MeshIssue& i : issues) {
+    nlohmann::json positions = nlohmann::json::array();
+    for (const Vec3& p : i.positions) positions.push_back(jsonPoint(p));  // NaN is written as null
+    list.push_back({{"kind", meshIssueName(i.kind)},
+                    {"count", i.count},
+                    {"elements", i.elements},
+                    {"positions_mm", std::move(positions)}});
+  }
+  j["issues"] = std::move(list);
+  nlohmann::json loops = nlohmann::json::array();
+  for (const BoundaryLoop& l : boundaryLoops)
+    loops.push_back({{"vertex_count", l.vertices.size()},
+                     {"length_mm", l.length},
+                     {"z_min_mm", l.zMin},
+                     {"z_max_mm", l.zMax},
+                     {"closed", l.closed}});
+  j["boundary_loops"] = std::move(loops);
+  j["component_count"] = componentCount;
+  j["part_class"] = partClassName(partClass);
+  j["class_reason"] = classReason;
+  j["plannable"] = isPlannable();
+  return j;
+}
+
+}  // namespace spira

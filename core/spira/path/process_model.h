@@ -1,0 +1,88 @@
+#pragma once
+
+#include <cstddef>
+#include <limits>
+#include <vector>
+
+#include "spira/path/calibration_table.h"
+#include "spira/path/trajectory.h"
+
+namespace spira {
+
+// Which process channel carries the height modulation.
+enum class ProcessMode {
+  Synergic,             // constant wire feed, travel speed modulated (the thesis's CMT synergic choice)
+  ConstantTravelSpeed,  // constant travel speed, wire feed modulated
+};
+
+// How a deposit height becomes a speed.
+enum class HeightModel {
+  // Thesis Eq. 4.1 with a steady wall of width W: LH = pi d^2 WFS / (4 W TS).
+  MassConservation,
+  // The user's measured height -> travel speed table at the wire feed `ProcessSettings::wireFeed`.
+  // In constant-travel-speed mode the wire feed follows from it as WFS = wireFeed * TS / TS_table(h):
+  // the bead is taken to depend on WFS / TS only, as mass conservation at constant width implies.
+  Calibration,
+};
+
+struct ProcessLimits {
+  double travelSpeedMin = 0.0;                                      // mm/s
+  double travelSpeedMax = std::numeric_limits<double>::infinity();  // mm/s
+  double wireFeedMin = 0.0;                                         // mm/s
+  double wireFeedMax = std::numeric_limits<double>::infinity();     // mm/s
+};
+
+struct ProcessSettings {
+  ProcessMode mode = ProcessMode::Synergic;
+  HeightModel model = HeightModel::MassConservation;
+  double wireDiameter = 1.0;        // d, mm (the thesis's G3Si wire)
+  double beadWidth = 5.2;           // W, mm (stabilised wall width at 2.3 m/min, thesis Fig. 4.3)
+  double wireFeed = 2300.0 / 60.0;  // mm/s: held in synergic mode; the table's wire feed
+  double travelSpeed = 5.0;         // mm/s: held in constant-travel-speed mode
+  CalibrationTable calibration;     // HeightModel::Calibration only
+  ProcessLimits limits;
+  // Speeds beyond the limits are reported and, when set, clamped to the limit, so the channels stay
+  // executable (the ramps' seam points near a closure point ask for a nearly zero deposit, i.e. an
+  // unbounded travel speed). The report keeps the requested value.
+  bool clampToLimits = true;
+};
+
+enum class ProcessViolationKind {
+  TravelSpeedBelowMin,
+  TravelSpeedAboveMax,
+  WireFeedBelowMin,
+  WireFeedAboveMax,
+  HeightOutsideCalibration,  // speeds taken from the nearest end of the table
+  HeightNotPositive,         // no speed maps to it; the previous point's speeds are kept
+};
+const char* processViolationName(ProcessViolationKind kind);  // stable snake_case name
+
+struct ProcessViolation {
+  size_t point = 0;
+  ProcessViolationKind kind = ProcessViolationKind::TravelSpeedAboveMax;
+  double value = 0.0;  // the offending speed (mm/s) or height (mm)
+  double limit = 0.0;  // the bound it crosses
+};
+
+struct ProcessReport {
+  double buildTime = 0.0;      // s, each segment at the (clamped) travel speed of its first point
+  double wireLength = 0.0;     // mm of wire fed over the build
+  double depositVolume = 0.0;  // mm^3: wireLength * pi d^2 / 4
+  double travelSpeedMin = 0.0, travelSpeedMax = 0.0;  // mm/s
+  double wireFeedMin = 0.0, wireFeedMax = 0.0;        // mm/s
+  std::vector<ProcessViolation> violations;
+  bool withinLimits = true;  // no violation of any kind
+};
+
+// Mass conservation (Eq. 4.1 over a wall of width W), d and W in mm, speeds in mm/s.
+double massConservationHeight(double wireDiameter, double beadWidth, double wireFeed, double travelSpeed);
+double massConservationTravelSpeed(double wireDiameter, double beadWidth, double wireFeed, double height);
+double massConservationWireFeed(double wireDiameter, double beadWidth, double travelSpeed, double height);
+
+// Fills travelSpeed and wireFeed of every point from its height channel, switches the arc on from
+// the first to the last point and checks the limits (clamping, see ProcessSettings). Throws InputError for
+// non-positive or non-finite diameter, width or held speed, crossed limits, or the calibration model without
+// a table. Limit violations are not errors: they are listed by point in the report.
+ProcessReport applyProcess(Trajectory& path, const ProcessSettings& settings);
+
+}  // namespace spira

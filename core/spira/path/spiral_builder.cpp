@@ -1,0 +1,225 @@
+#include "spira/path/spiral_builder.h"
+
+#include <algorithm>
+#include <sstream>
+
+#include "spira/base/error.h"
+#include "spira/path/arc_length_polyline.h"
+#include "spira/path/feasibility.h"
+#include "spira/path/layer_count.h"
+#include "spira/path/spiral_frames.h"
+#include "spira/path/spiral_input.h"
+#include "spira/path/startup_profile.h"
+
+namespace spira {
+
+namespace {
+
+// Arc-length position of every point, revolution-major: s[k * n + i].
+struct Layout {
+  int n = 0;
+  int revolutions = 0;
+  std::vector<double> s;
+};
+
+void throwTooShort(size_t i, double length, double ramps, double hMin)
+{
+  std::ostringstream m;
+  m << "generatrix " << i << " is " << length << " mm long, but the start-up and termination ramps take "
+    << ramps << " mm of it and the modulated phase needs at least h_min = " << hMin << " mm more";
+  throw InputError(m.str(),
+                   "use a smaller h or a wider window (fewer start-up revolutions), or a taller part");
+}
+
+// Ramps and layer count. With StartupTransition::UniformHelix the ramps are sized for the layer
+// step c the modulated phase uses at the seam (the mean step of the first and last generatrices),
+// which depends on the layer count, which depends on the length the ramps take. For a given count
+// c solves c n_layer = (l_0(c) + l_{n-1}(c)) / 2, monotone in c (bisection over the window); the
+// count is then recomputed, until both agree (a few rounds at most).
+Layout layOut(const std::vector<double>& lengths, const SpiralSettings& s, StartupProfile& prof,
+              SpiralReport& report)
+{
+  const int n = static_cast<int>(lengths.size());
+  const bool ramps = s.termination == Termination::Ramps;
+  std::vector<double> startLen(n), modLen(n);
+  const auto rampLength = [&](const StartupProfile& p, int i) {
+    const double u = static_cast<double>(i) / (n - 1);
+    return p.startLength(u) + (ramps ? p.endLength(u) : 0.0);
+  };
+  // Lays the ramps for seam step c (0: h); returns the layer count they leave room for.
+  const auto measure = [&](double c) {
+    prof = StartupProfile(s.h, s.hMin, s.hMax, s.startupTransition, n, c);
+    for (int i = 0; i < n; ++i) {
+      startLen[i] = prof.startLength(static_cast<double>(i) / (n - 1));
+      modLen[i] = lengths[i] - rampLength(prof, i);
+      if (modLen[i] < s.hMin * (1.0 - 1e-9)) throwTooShort(i, lengths[i], lengths[i] - modLen[i], s.hMin);
+    }
+    const int count = countLayers(modLen, s.h, s.hMin, s.hMax, s.layerMode);
+    if (count < 1) throwTooShort(0, lengths[0], lengths[0] - modLen[0], s.hMin);
+    return count;
+  };
+  const auto seamExcess = [&](double c, int count) {
+    const StartupProfile p(s.h, s.hMin, s.hMax, s.startupTransition, n, c);
+    return c * count - 0.5 * (lengths[0] - rampLength(p, 0) + lengths[n - 1] - rampLength(p, n - 1));
+  };
+
+  int nLayers = measure(0.0);
+  for (int round = 0; round < 10 && s.startupTransition == StartupTransition::UniformHelix; ++round) {
+    double lo = s.hMin, hi = s.hMax;
+    if (seamExcess(lo, nLayers) >= 0.0) {
+      hi = lo;
+    } else if (seamExcess(hi, nLayers) <= 0.0) {
+      lo = hi;
+    }
+    for (int it = 0; it < 60 && hi - lo > 1e-13 * s.h; ++it) {
+      const double mid = 0.5 * (lo + hi);
+      if (seamExcess(mid, nLayers) < 0.0) {
+        lo = mid;
+      } else {
+        hi = mid;
+      }
+    }
+    const int count = measure(0.5 * (lo + hi));
+    if (count == nLayers) break;
+    nLayers = count;
+  }
+
+  report.nStartupRevolutions = prof.startRevolutions();
+  report.nLayers = nLayers;
+  report.nEndRevolutions = ramps ? prof.endRevolutions() : 0;
+  report.nRevolutions = report.nStartupRevolutions + nLayers + report.nEndRevolutions;
+  report.lengthCriterion = lengthCriterion(modLen, nLayers, s.hMin, s.hMax);
+  report.thesisLengthCriterion = thesisLengthCriterion(lengths, s.hMin, s.hMax);
+  const auto [gMin, gMax] = std::minmax_element(lengths.begin(), lengths.end());
+  report.generatrixLengthMin = *gMin;
+  report.generatrixLengthMax = *gMax;
+  report.modulatedLengthMin = report.lengthCriterion.lengthMin;
+  report.modulatedLengthMax = report.lengthCriterion.lengthMax;
+  report.stepMin = report.modulatedLengthMin / nLayers;
+  report.stepMax = report.modulatedLengthMax / nLayers;
+  report.seamStep = modLen[0] / nLayers - prof.climb();
+
+  Layout lay;
+  lay.n = n;
+  lay.revolutions = report.nRevolutions;
+  lay.s.resize(static_cast<size_t>(lay.revolutions) * n);
+  for (int i = 0; i < n; ++i) {
+    const double u = static_cast<double>(i) / (n - 1);
+    const double d = modLen[i] / nLayers;
+    int k = 0;
+    double acc = 0.0;
+    for (int r = 0; r < report.nStartupRevolutions; ++r, ++k) lay.s[k * n + i] = acc += prof.startStep(r, u);
+    for (int m = 1; m <= nLayers; ++m, ++k) lay.s[k * n + i] = acc = startLen[i] + m * d;
+    for (int r = 0; r < report.nEndRevolutions; ++r, ++k) lay.s[k * n + i] = acc += prof.endStep(r, u);
+    lay.s[(lay.revolutions - 1) * n + i] = lengths[i];  // exactly on the edge, whatever the rounding
+  }
+  return lay;
+}
+
+// Number of trailing revolutions shorter than minLength; at least the last one is kept out, since
+// on a closed part it is the closure point repeated. The first revolution always stays.
+int trailingDegenerate(const Trajectory& path, int n, int revolutions, double minLength)
+{
+  int collapsed = 1;
+  for (int k = revolutions - 2; k >= 1; --k, ++collapsed) {
+    double perimeter = 0.0;
+    const auto* rev = &path.points[static_cast<size_t>(k) * n];
+    for (int i = 1; i < n; ++i) perimeter += (rev[i].position - rev[i - 1].position).norm();
+    if (perimeter >= minLength) break;
+  }
+  return collapsed;
+}
+
+}  // namespace
+
+SpiralResult buildSpiral(const Generatrices& generatrices, const SpiralSettings& settings, Progress& progress)
+{
+  StartupProfile prof(settings.h, settings.hMin, settings.hMax);  // window errors before geometry errors
+  validateSpiralSettings(settings);
+  progress.report(0.0, "spiral");
+  const PreparedGeneratrices prep = prepareGeneratrices(generatrices, settings);
+  const Generatrices& g = prep.generatrices();
+  const int n = static_cast<int>(g.lines.size());
+
+  std::vector<ArcLengthPolyline> arcs;
+  arcs.reserve(n);
+  std::vector<double> lengths(n);
+  for (int i = 0; i < n; ++i) {
+    arcs.emplace_back(g.lines[i], g.normals[i]);
+    lengths[i] = arcs[i].length();
+  }
+
+  SpiralResult result;
+  SpiralReport& report = result.report;
+  report.normalsEstimated = prep.normalsEstimated();
+  report.pointsPerRevolution = n;
+  const Layout lay = layOut(lengths, settings, prof, report);
+  const int revs = lay.revolutions;
+
+  // Generatrix by generatrix, so each polyline is swept once while it is in cache; points are
+  // stored revolution by revolution, the spiral order.
+  Trajectory& path = result.trajectory;
+  path.points.resize(lay.s.size());
+  for (int i = 0; i < n; ++i) {
+    progress.checkCancel();
+    size_t cursor = 0;
+    for (int k = 0; k < revs; ++k) {
+      const size_t q = static_cast<size_t>(k) * n + i;
+      const auto sample = arcs[i].at(lay.s[q], cursor);
+      TrajectoryPoint& p = path.points[q];
+      p.position = sample.position;
+      p.normal = sample.normal;
+      p.revolution = k;
+      p.generatrix = i;
+      p.arcOn = true;
+    }
+    if (i % 64 == 0) progress.report(0.7 * i / n, "spiral");
+  }
+
+  const double minRev = settings.minRevolutionLength > 0.0 ? settings.minRevolutionLength : settings.h;
+  report.collapsedRevolutions = g.hasClosurePoint ? trailingDegenerate(path, n, revs, minRev) : 0;
+  const int kept = revs - report.collapsedRevolutions;
+  const bool closure = report.collapsedRevolutions > 0;
+  path.points.resize(static_cast<size_t>(kept) * n);
+  if (closure) {
+    TrajectoryPoint p;
+    p.position = g.closurePoint;
+    p.normal = arcs[0].at(lengths[0]).normal;
+    p.revolution = kept;
+    p.generatrix = 0;
+    p.arcOn = true;
+    path.points.push_back(p);
+  }
+
+  // Generatrix step vector (from the same generatrix one revolution below, or its base) and arc
+  // step of every point; the closure point steps from generatrix 0.
+  const size_t count = path.points.size();
+  std::vector<Vec3> steps(count);
+  std::vector<double> arcSteps(count);
+  for (size_t q = 0; q < static_cast<size_t>(kept) * n; ++q) {
+    const bool first = q < static_cast<size_t>(n);
+    const Vec3& below = first ? g.lines[q].front() : path.points[q - n].position;
+    steps[q] = path.points[q].position - below;
+    arcSteps[q] = lay.s[q] - (first ? 0.0 : lay.s[q - n]);
+  }
+  if (closure) {
+    const size_t below = static_cast<size_t>(kept - 1) * n;  // generatrix 0, last kept revolution
+    steps.back() = g.closurePoint - path.points[below].position;
+    arcSteps.back() = lengths[0] - lay.s[below];
+  }
+  progress.report(0.8, "spiral frames");
+
+  computeFrames(path);
+  report.normalsFlipped = orientBuildDirection(path, steps);
+  computeDepositHeights(path, steps, arcSteps);
+  checkFeasibility(path, settings.h, settings.hMin, settings.hMax, settings.heightTolerance, closure, report);
+
+  report.nPoints = count;
+  report.pathLength = path.length();
+  for (size_t q = 1; q < count; ++q)
+    report.maxJump = std::max(report.maxJump, (path.points[q].position - path.points[q - 1].position).norm());
+  progress.report(1.0, "spiral");
+  return result;
+}
+
+}  // namespace spira

@@ -1,0 +1,30 @@
+#pragma once
+
+#include <vector>
+
+#include "spira/path/trajectory.h"
+
+namespace spira {
+
+// The thesis's "Frenet" frame at every point (§3.3.4): n is the surface normal already stored in
+// the point, t the unit direction to the next point and b = n x t the build direction. The chord to
+// the next point is projected into the tangent plane before normalising, so (t, b, n) is an
+// orthonormal, right-handed frame the torch can use directly. The last point, and points that
+// coincide with the next one, take the tangent of the nearest point before them (after them at the
+// very start).
+void computeFrames(Trajectory& path);
+
+// steps[q] is the generatrix step vector of point q: from the point of the same generatrix on the
+// previous revolution (the base point on the first revolution) to point q. When b points down the
+// generatrices overall (sum of b . step < 0: generatrices ordered against the normals' sense), n
+// and b are reversed everywhere so the build direction points away from the base. Returns whether
+// it did.
+bool orientBuildDirection(Trajectory& path, const std::vector<Vec3>& steps);
+
+// True deposit heights, thesis Eq. 3.5 with d_i in place of the misprinted d_1:
+// h = d cos(theta), d = arcSteps[q] the arc length stepped along the generatrix and theta the
+// angle between steps[q] and b. A point that did not move along its generatrix gets 0.
+void computeDepositHeights(Trajectory& path, const std::vector<Vec3>& steps,
+                           const std::vector<double>& arcSteps);
+
+}  // namespace spira

@@ -1,0 +1,58 @@
+#pragma once
+
+#include "spira/path/startup_profile.h"
+
+namespace spira {
+
+// How many revolutions the modulated phase gets (after the start-up, before the termination).
+enum class LayerMode {
+  // Thesis Eq. 3.14: n = floor(min(L) / h_min). The shortest generatrix gets about h_min, the
+  // mean deposit falls below h.
+  Floor,
+  // Centres the mean deposit on h (thesis §4.3: "the mean is brought back to h"). n is the count
+  // whose mean step mean(L) / n lies closest to h (floor or ceil of mean(L) / h, i.e. round()
+  // except where 1/n's curvature tips a near-half case), then clamped into the counts for which
+  // every step d_i = l_i / n lies in the window, [ceil(max L / h_max), floor(min L / h_min)],
+  // when that range is not empty. When it is empty no count fits and the centred one is kept; the
+  // report then says the plan is infeasible.
+  Centered,
+};
+
+// How the spiral ends.
+enum class Termination {
+  // The start-up mirrored (see StartupProfile): the modulated phase keeps the helix the start-up
+  // built all the way up, and the last j_full + 2 revolutions level it onto the upper edge (or the
+  // closure point). Ramps and termination take the same length on every generatrix, so on a
+  // cylinder every modulated step is the same.
+  Ramps,
+  // The thesis as written (§3.3.3): no termination revolutions; d_i = l_i / n absorbs the start-up
+  // climb over the whole build. The last revolution still lies on the upper edge, but the seam
+  // rise grows to about d over the build, and the seam points' true heights shrink with it.
+  Absorb,
+};
+
+struct SpiralSettings {
+  double h = 2.0;     // nominal deposit height, mm
+  double hMin = 1.8;  // thinnest deposit the process lays, mm
+  double hMax = 2.2;  // thickest deposit, mm
+  // 0: one point per generatrix and revolution. Otherwise the generatrices are first resampled to
+  // this many by blending neighbours (see resample_generatrices.h).
+  int pointsPerRevolution = 0;
+  LayerMode layerMode = LayerMode::Floor;
+  // UniformHelix by default: with ToNominal the seam step g = 0.1 h (at ±10 %) is climbed in one
+  // segment, whose true height d cos(theta) leaves the window wherever revolutions are short (on a
+  // 1-degree decomposition, on every revolution of radius below 57 h when steps sit at h_min).
+  StartupTransition startupTransition = StartupTransition::UniformHelix;
+  Termination termination = Termination::Ramps;
+  // Eq. 3.15 tolerance, as a fraction of h: a height counts as outside the window only beyond
+  // [h_min - tol h, h_max + tol h]. The default 0.5 % (0.01 mm at h = 2 mm) is far below what a WAAM
+  // process resolves; it absorbs the cos(theta) = 1 - x^2 / 2 of a path that climbs with slope x on
+  // steps placed exactly at h_min (a uniform helix of radius r climbs x = h / (2 pi r): 0.5 % at
+  // r = 1.6 h).
+  double heightTolerance = 0.005;
+  // Closed parts: trailing revolutions shorter than this (mm) are replaced by the closure point
+  // alone, so the path does not end with many copies of it. 0 means h.
+  double minRevolutionLength = 0.0;
+};
+
+}  // namespace spira

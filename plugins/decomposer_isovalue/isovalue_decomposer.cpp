@@ -1,0 +1,121 @@
+#include "isovalue_decomposer.h"
+
+#include <memory>
+
+#include "spira/base/error.h"
+#include "spira/contour/isovalue_decomposition.h"
+#include "spira/field/harmonic_field.h"
+#include "spira/field/heat_distance.h"
+#include "spira/plugin/plugin_registry.h"
+
+namespace spira {
+
+namespace {
+
+ParamSchema makeSchema()
+{
+  std::vector<ParamDef> defs;
+  {
+    ParamDef d;
+    d.key = "n_points";
+    d.type = ParamType::Int;
+    d.defaultValue = std::int64_t{360};
+    d.min = 8;
+    d.max = 20000;
+    d.label = "Points per revolution";
+    d.tooltip =
+        "Number of generatrices, i.e. path points per revolution. Every iso-contour is resampled to this "
+        "many "
+        "points; raise it for large or strongly curved parts.";
+    d.category = "Discretisation";
+    defs.push_back(d);
+  }
+  {
+    ParamDef d;
+    d.key = "level_spacing";
+    d.type = ParamType::Double;
+    d.defaultValue = 0.0;
+    d.min = 0.0;
+    d.max = 1000.0;
+    d.unit = "mm";
+    d.label = "Iso-level spacing";
+    d.tooltip =
+        "Mean distance on the surface between consecutive iso-contours, i.e. between the points of each "
+        "generatrix. 0 uses the mesh's mean edge length, the finest spacing the mesh resolves.";
+    d.category = "Discretisation";
+    defs.push_back(d);
+  }
+  return ParamSchema(std::move(defs));
+}
+
+bool canPlan(const DecomposeInput& input, std::string* why)
+{
+  auto no = [&](const std::string& reason) {
+    if (why) *why = reason;
+    return false;
+  };
+  if (input.partClass == PartClass::Unsupported)
+    return no("the part is neither open (two free edges) nor closed (one free edge)");
+  if (input.partClass == PartClass::Open && !input.upper) return no("the open part has no upper edge");
+  if (input.lower.vertices.size() < 3) return no("the part has no lower edge");
+  if (input.field && input.field->size() != input.mesh.vertexCount())
+    return no("the scalar field has " + std::to_string(input.field->size()) + " values for " +
+              std::to_string(input.mesh.vertexCount()) + " vertices");
+  return true;
+}
+
+}  // namespace
+
+IsovalueDecomposer::IsovalueDecomposer() : schema_(makeSchema()) {}
+
+std::string IsovalueDecomposer::description() const
+{
+  return "Generatrices along the iso-contours of a scalar field: geodesic distance from the base (closed "
+         "parts, ending at the closure point) or harmonic field (open parts). Mono-branch parts only.";
+}
+
+bool IsovalueDecomposer::accepts(const DecomposeInput& input, std::string* why) const
+{
+  return canPlan(input, why);
+}
+
+DecomposeResult IsovalueDecomposer::decompose(const DecomposeInput& input, const ParamSet& params,
+                                              Progress& progress) const
+{
+  std::string why;
+  if (!canPlan(input, &why))
+    throw InputError("decomposer.isovalue cannot plan this part: " + why,
+                     "check the part's free edges, or recompute the field for this mesh");
+  const ParamSet values = params.withDefaults(schema_);
+  schema_.validate(values);
+  IsoDecompositionOptions options;
+  options.pointsPerContour = static_cast<size_t>(values.getInt("n_points"));
+  options.levelSpacing = values.internal(schema_, "level_spacing");
+  const bool open = input.partClass == PartClass::Open;
+
+  // The field computed upstream, or the thesis's own: harmonic (open) or heat-method distance
+  // from the lower edge (closed).
+  std::vector<double> computed;
+  if (!input.field) {
+    SubProgress fieldProgress(progress, 0.0, 0.5, open ? "harmonic field" : "geodesic distance");
+    computed =
+        open ? harmonicField(input.mesh, input.lower.vertices, input.upper->vertices, fieldProgress)
+             : heatGeodesicDistance(input.mesh, input.lower.vertices, HeatDistanceOptions{}, fieldProgress);
+  }
+  const std::vector<double>& field = input.field ? *input.field : computed;
+  SubProgress decomposeProgress(progress, input.field ? 0.0 : 0.5, 1.0, "iso-values");
+  IsoDecomposition d =
+      decomposeByIsoValues(input.mesh, field, input.lower, open ? &*input.upper : nullptr,
+                           open ? std::nullopt : input.closurePoint, options, decomposeProgress);
+  DecomposeResult out;
+  out.generatrices = std::move(d.generatrices);
+  out.warnings = std::move(d.warnings);
+  return out;
+}
+
+}  // namespace spira
+
+void spira_register_decomposer_isovalue(spira::PluginRegistry& registry)
+{
+  registry.add(std::make_unique<spira::IsovalueDecomposer>());
+}

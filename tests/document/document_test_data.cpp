@@ -1,0 +1,171 @@
+#include "document/document_test_data.h"
+
+#include <cmath>
+#include <cstring>
+#include <limits>
+
+#include <nlohmann/json.hpp>
+
+namespace spira::test {
+
+TriangleMesh awkwardMesh()
+{
+  TriangleMesh m;
+  const double tiny = 1e-300;
+  const double denormal = std::numeric_limits<double>::denorm_min();
+  const double huge = std::numeric_limits<double>::max();
+  m.vertices = {Vec3(0.1, -0.0, 0.0),   Vec3(10.0, tiny, -0.0), Vec3(10.0, 10.0, denormal),
+                Vec3(-0.0, 10.0, 0.3),  Vec3(0.1, 0.2, 20.0),   Vec3(10.0, 1.0 / 3.0, 20.0),
+                Vec3(10.0, 10.0, huge), Vec3(M_PI, 10.0, 20.0)};
+  // Four side walls of a square tube, two triangles each.
+  for (int i = 0; i < 4; ++i) {
+    const int a = i, b = (i + 1) % 4, c = 4 + (i + 1) % 4, d = 4 + i;
+    m.faces.push_back({a, b, c});
+    m.faces.push_back({a, c, d});
+  }
+  return m;
+}
+
+TriangleMesh tetrahedron(double edge)
+{
+  TriangleMesh m;
+  const double h = edge * std::sqrt(2.0 / 3.0);
+  m.vertices = {Vec3(0, 0, 0), Vec3(edge, 0, 0), Vec3(edge / 2, edge * std::sqrt(3.0) / 2, 0),
+                Vec3(edge / 2, edge * std::sqrt(3.0) / 6, h)};
+  m.faces = {{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {2, 0, 3}};
+  return m;
+}
+
+Part samplePart()
+{
+  Part p;
+  p.name = "tube \xC3\xA9";  // non-ASCII on purpose
+  p.sourcePath = "/parts/tube.stl";
+  p.sourceUnit = LengthUnit::Inch;
+  p.mesh = std::make_shared<const TriangleMesh>(awkwardMesh());
+  p.T_world_part = transformFromXyzRpy(Vec3(100.1, -200.0, 0.3), Vec3(0.1, -0.2, 0.3));
+  p.lowerBoundaryOverride = 1;
+  return p;
+}
+
+CellRecord sampleCell()
+{
+  CellRecord c;
+  c.name = "KR60 + DKP-400";
+  c.robotUrdf = "robots/kr60/kr60.urdf";
+  c.controller = ControllerFamily::FanucR30iB;
+  c.T_world_robotbase = transformFromXyzZyx(Vec3(-1200.5, 0.1, 450.0), 0.5, -0.25, 1e-9);
+  c.tool.T_flange_tcp = transformFromXyzRpy(Vec3(0, 35.2, 410.7), Vec3(0, -0.4363, 0));
+  c.tool.nozzleRadius = 7.5;
+  c.tool.nozzleLength = 22.1;
+  c.tool.torchBodyRadius = 18.0;
+  c.tool.torchBodyLength = 180.3;
+  c.positionerUrdf = "robots/dkp400/dkp400.urdf";
+  c.T_world_positioner = transformFromXyzRpy(Vec3(800.0, 0.0, 0.0), Vec3(0, 0, M_PI / 2));
+  c.mounting = PartMounting::Positioner;
+  for (int i = 0; i < 6; ++i)
+    c.robotAxes.push_back(CellAxis{"joint_a" + std::to_string(i + 1), i % 2 ? -1 : 1, i == 2 ? -90.0 : 0.0,
+                                   -170.0 + i, 170.0 - i, 100.0 + 0.1 * i});
+  c.positionerAxes.push_back(CellAxis{"tilt", 1, 0.0, -90.0, 90.0, 60.0});
+  c.positionerAxes.push_back(CellAxis{"turn", -1, 0.5, -1e6, 1e6, 120.0});
+  return c;
+}
+
+PlanSettings sampleSettings()
+{
+  PlanSettings s;
+  s.decomposerId = "decomposer.geodesic";
+  s.closureFinderId = "closure.zone";
+  ParamSet process;
+  process.set("travel_speed", 8.5);
+  process.set("wire_feed", 2.0);  // integral double must stay a double
+  process.set("layer_height", 0.1);
+  process.set("offset", -0.0);
+  process.set("layers", std::int64_t{-3});
+  process.set("big", std::int64_t{1} << 62);
+  process.set("arc", true);
+  process.set("dwell", false);
+  process.set("mode", std::string("cmt"));
+  process.set("empty", std::string());
+  s.params[PlanSettings::kProcessSection] = process;
+  ParamSet geo;
+  geo.set("smoothing", 1e-300);
+  geo.set("output", std::string("/tmp/out dir/\xE2\x82\xAC"));
+  s.params["decomposer.geodesic"] = geo;
+  return s;
+}
+
+Trajectory sampleTrajectory(int points)
+{
+  Trajectory t;
+  for (int i = 0; i < points; ++i) {
+    TrajectoryPoint p;
+    const double a = 0.1 * i;
+    p.position = Vec3(std::cos(a) * 30.0, std::sin(a) * 30.0, 0.05 * i);
+    p.normal = Vec3(std::cos(a), std::sin(a), -0.0);
+    p.tangent = Vec3(-std::sin(a), std::cos(a), 0.0);
+    p.build = p.normal.cross(p.tangent);
+    p.path = i / 7;
+    p.revolution = i / 5;
+    p.generatrix = i % 5;
+    p.height = 1.0 + 1e-12 * i;
+    p.travelSpeed = 10.0 / 3.0;
+    p.wireFeed = 0.1 * i;
+    p.arcOn = i % 3 != 0;
+    t.points.push_back(p);
+    t.extra["dwell"].push_back(i == 0 ? -0.0 : 0.25 * i);
+  }
+  return t;
+}
+
+Generatrices sampleGeneratrices()
+{
+  Generatrices g;
+  for (int k = 0; k < 4; ++k) {
+    Polyline l;
+    for (int i = 0; i <= k + 1; ++i) l.push_back(Vec3(k, 0.1 * i, i / 3.0));
+    g.lines.push_back(l);
+  }
+  for (const Polyline& l : g.lines) {
+    std::vector<Vec3> n;
+    for (size_t i = 0; i < l.size(); ++i) n.push_back(Vec3(1.0 / 3.0, -0.0, 0.1 * i).normalized());
+    g.normals.push_back(n);
+  }
+  g.lines.push_back(Polyline());  // an empty line survives too
+  g.normals.push_back({});
+  g.hasClosurePoint = true;
+  g.closurePoint = Vec3(0.1, 0.2, 0.30000000000000004);
+  return g;
+}
+
+DocumentState fullState()
+{
+  DocumentState s;
+  s.part = std::make_shared<const Part>(samplePart());
+  s.substrate = std::make_shared<const Substrate>(Substrate::fromMesh(
+      std::make_shared<const TriangleMesh>(tetrahedron(50.0)), "pipe", "/parts/pipe.obj"));
+  s.cell = std::make_shared<const CellRecord>(sampleCell());
+  s.settings = std::make_shared<const PlanSettings>(sampleSettings());
+  FieldResult f;
+  f.kind = "geodesic_distance";
+  f.source = "heat method from loop 1";
+  f.values = {0.0, -0.0, 0.1, 1e-300, 3.5, 7.25, std::numeric_limits<double>::infinity(), 2.0};
+  s.results.setField(std::make_shared<const FieldResult>(f));
+  s.results.setGeneratrices(std::make_shared<const Generatrices>(sampleGeneratrices()));
+  s.results.setSpiral(std::make_shared<const Trajectory>(sampleTrajectory(20)));
+  s.results.setProcess(std::make_shared<const Trajectory>(sampleTrajectory(23)));
+  s.results.setKinematics(std::make_shared<const nlohmann::json>(
+      nlohmann::json{{"joints", {{0.1, -0.0, 3.0}, {1, 2, 3}}}, {"reachable", true}}));
+  s.results.setExport(std::make_shared<const nlohmann::json>(nlohmann::json{{"files", {"a.src", "a.dat"}}}));
+  for (int i = 0; i < kStageCount; ++i)
+    s.results.setReport(stageAt(i), std::make_shared<const nlohmann::json>(nlohmann::json{
+                                        {"stage", i}, {"seconds", 0.1 * i}, {"warnings", {}}}));
+  return s;
+}
+
+bool bitwiseEqual(const std::vector<Vec3>& a, const std::vector<Vec3>& b)
+{
+  return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(Vec3)) == 0);
+}
+
+}  // namespace spira::test

@@ -1,0 +1,75 @@
+#include "support/gui_test_support.h"
+
+#include <cstdlib>
+#include <set>
+
+#include <QApplication>
+#include <QSignalSpy>
+#include <QTest>
+
+#include "spira/io/mesh_writers.h"
+#include "spira/mesh/mesh_primitives.h"
+#include "spira/ui/main_window.h"
+#include "spira/ui/scene_view.h"
+
+namespace spira::test {
+
+std::filesystem::path writeOpenCylinderStl(const std::filesystem::path& dir, const std::string& name)
+{
+  const std::filesystem::path file = dir / name;
+  writeMesh(makeOpenCylinder(30.0, 60.0, kCylinderSegments, kCylinderRings), file, MeshFileFormat::StlBinary);
+  return file;
+}
+
+QString qpath(const std::filesystem::path& p)
+{
+  return QString::fromStdString(p.string());
+}
+
+void showAndWait(spira::ui::MainWindow& window)
+{
+  window.resize(1280, 800);
+  window.show();
+  if (!QTest::qWaitForWindowExposed(&window, 10000)) std::abort();
+  for (int i = 0; i < 5; ++i) QApplication::processEvents();
+}
+
+bool openAndWait(spira::ui::MainWindow& window, const QString& file)
+{
+  QSignalSpy spy(&window, &spira::ui::MainWindow::fileOpened);
+  window.openFile(file);
+  if (spy.isEmpty() && !spy.wait(60000)) return false;
+  return spy.takeFirst().at(1).toBool();
+}
+
+int distinctColours(const QImage& image, const QRect& rect)
+{
+  std::set<QRgb> colours;
+  const QRect r = rect.intersected(image.rect());
+  for (int y = r.top(); y <= r.bottom(); ++y) {
+    for (int x = r.left(); x <= r.right(); ++x) colours.insert(image.pixel(x, y) & 0xffffffu);
+  }
+  return static_cast<int>(colours.size());
+}
+
+double meanDifference(const QImage& a, const QImage& b, const QRect& rect)
+{
+  const QRect r = rect.intersected(a.rect()).intersected(b.rect());
+  if (r.isEmpty()) return 0.0;
+  double sum = 0.0;
+  for (int y = r.top(); y <= r.bottom(); ++y) {
+    for (int x = r.left(); x <= r.right(); ++x) {
+      const QRgb p = a.pixel(x, y), q = b.pixel(x, y);
+      sum += std::abs(qRed(p) - qRed(q)) + std::abs(qGreen(p) - qGreen(q)) + std::abs(qBlue(p) - qBlue(q));
+    }
+  }
+  return sum / (3.0 * r.width() * r.height());
+}
+
+QRect sceneRect(spira::ui::MainWindow& window)
+{
+  spira::ui::SceneView* view = window.sceneView();
+  return QRect(view->mapTo(&window, QPoint(0, 0)), view->size());
+}
+
+}  // namespace spira::test

@@ -1,0 +1,137 @@
+#include "spira/ui/actions.h"
+
+#include <QAction>
+#include <QApplication>
+#include <QIcon>
+#include <QMainWindow>
+#include <QMenuBar>
+#include <QStyle>
+#include <QToolBar>
+
+namespace spira::ui {
+
+namespace {
+
+QAction* make(QMainWindow* w, const QString& text, const QString& tip, const QList<QKeySequence>& keys = {})
+{
+  auto* a = new QAction(text, w);
+  a->setStatusTip(tip);
+  a->setToolTip(tip);
+  a->setShortcuts(keys);
+  // Shortcuts work while the 3D view or a dock has focus.
+  a->setShortcutContext(Qt::WindowShortcut);
+  return a;
+}
+
+QAction* makeToggle(QMainWindow* w, const QString& text, const QString& tip, bool on)
+{
+  QAction* a = make(w, text, tip);
+  a->setCheckable(true);
+  a->setChecked(on);
+  return a;
+}
+
+}  // namespace
+
+Actions Actions::create(QMainWindow* w, const QList<QAction*>& panelToggles)
+{
+  QStyle* st = w->style();
+  Actions a;
+  a.importPart = make(w, QObject::tr("&Import Part..."), QObject::tr("Import a part mesh (STL, ...)"),
+                      {QKeySequence(Qt::CTRL | Qt::Key_I)});
+  a.importPart->setIcon(QIcon(QStringLiteral(":/spira/icons/import-part.svg")));
+  a.openProject = make(w, QObject::tr("&Open Project..."), QObject::tr("Open a Spira project (.spira)"),
+                       {QKeySequence::Open});
+  a.openProject->setIcon(st->standardIcon(QStyle::SP_DialogOpenButton));
+  a.save = make(w, QObject::tr("&Save"), QObject::tr("Save the project"), {QKeySequence::Save});
+  a.save->setIcon(st->standardIcon(QStyle::SP_DialogSaveButton));
+  a.saveAs = make(w, QObject::tr("Save &As..."), QObject::tr("Save the project under a new name"),
+                  {QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_S)});
+  a.quit = make(w, QObject::tr("&Quit"), QObject::tr("Quit Spira"), {QKeySequence(Qt::CTRL | Qt::Key_Q)});
+  a.quit->setMenuRole(QAction::QuitRole);
+
+  a.undo = make(w, QObject::tr("&Undo"), QObject::tr("Undo the last change"),
+                {QKeySequence(Qt::CTRL | Qt::Key_Z)});
+  a.undo->setIcon(st->standardIcon(QStyle::SP_ArrowBack));
+  a.redo = make(w, QObject::tr("&Redo"), QObject::tr("Redo the change undone last"),
+                {QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_Z), QKeySequence(Qt::CTRL | Qt::Key_Y)});
+  a.redo->setIcon(st->standardIcon(QStyle::SP_ArrowForward));
+
+  a.showEdges =
+      makeToggle(w, QObject::tr("Show &Edges"), QObject::tr("Draw the mesh's triangle edges"), false);
+  a.showEdges->setShortcut(QKeySequence(Qt::Key_E));
+  a.showBoundingBox =
+      makeToggle(w, QObject::tr("Show &Bounding Box"), QObject::tr("Draw the part's bounding box"), false);
+  a.showBoundingBox->setShortcut(QKeySequence(Qt::Key_B));
+  a.showSubstrate =
+      makeToggle(w, QObject::tr("Show &Substrate"), QObject::tr("Draw the substrate plate"), true);
+  a.viewIso = make(w, QObject::tr("&Iso View"), QObject::tr("Look from the front-right, above"),
+                   {QKeySequence(Qt::Key_0)});
+  a.viewFront = make(w, QObject::tr("&Front View"), QObject::tr("Look along +Y"), {QKeySequence(Qt::Key_1)});
+  a.viewTop = make(w, QObject::tr("&Top View"), QObject::tr("Look down along -Z"), {QKeySequence(Qt::Key_7)});
+  a.viewSide = make(w, QObject::tr("&Side View"), QObject::tr("Look along -X"), {QKeySequence(Qt::Key_3)});
+  a.fitView =
+      make(w, QObject::tr("&Fit to View"), QObject::tr("Frame the whole part"), {QKeySequence(Qt::Key_F)});
+  a.about = make(w, QObject::tr("&About Spira"), QObject::tr("Version and licence"));
+  a.about->setMenuRole(QAction::AboutRole);
+  a.aboutQt = make(w, QObject::tr("About &Qt"), QObject::tr("Qt version and licence"));
+  a.aboutQt->setMenuRole(QAction::AboutQtRole);
+
+  QMenuBar* bar = w->menuBar();
+  QMenu* file = bar->addMenu(QObject::tr("&File"));
+  file->addAction(a.importPart);
+  file->addSeparator();
+  file->addAction(a.openProject);
+  a.recentMenu = file->addMenu(QObject::tr("Open &Recent"));
+  a.recentMenu->setObjectName("recentMenu");
+  file->addSeparator();
+  file->addAction(a.save);
+  file->addAction(a.saveAs);
+  file->addSeparator();
+  file->addAction(a.quit);
+
+  QMenu* edit = bar->addMenu(QObject::tr("&Edit"));
+  edit->addAction(a.undo);
+  edit->addAction(a.redo);
+
+  QMenu* view = bar->addMenu(QObject::tr("&View"));
+  view->addAction(a.viewIso);
+  view->addAction(a.viewFront);
+  view->addAction(a.viewTop);
+  view->addAction(a.viewSide);
+  view->addAction(a.fitView);
+  view->addSeparator();
+  view->addAction(a.showEdges);
+  view->addAction(a.showBoundingBox);
+  view->addAction(a.showSubstrate);
+  view->addSeparator();
+  for (QAction* t : panelToggles) view->addAction(t);
+
+  QMenu* help = bar->addMenu(QObject::tr("&Help"));
+  help->addAction(a.about);
+  help->addAction(a.aboutQt);
+
+  QToolBar* tools = w->addToolBar(QObject::tr("Main"));
+  tools->setObjectName("mainToolBar");
+  tools->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
+  tools->addAction(a.importPart);
+  tools->addAction(a.openProject);
+  tools->addAction(a.save);
+  tools->addSeparator();
+  tools->addAction(a.undo);
+  tools->addAction(a.redo);
+  QToolBar* viewBar = w->addToolBar(QObject::tr("View"));
+  viewBar->setObjectName("viewToolBar");
+  viewBar->setToolButtonStyle(Qt::ToolButtonTextOnly);
+  viewBar->addAction(a.viewIso);
+  viewBar->addAction(a.viewFront);
+  viewBar->addAction(a.viewTop);
+  viewBar->addAction(a.viewSide);
+  viewBar->addAction(a.fitView);
+  viewBar->addSeparator();
+  viewBar->addAction(a.showEdges);
+  viewBar->addAction(a.showBoundingBox);
+  return a;
+}
+
+}  // namespace spira::ui

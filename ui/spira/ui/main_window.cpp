@@ -1,0 +1,303 @@
+#include "spira/ui/main_window.h"
+
+#include <QAction>
+#include <QApplication>
+#include <QCloseEvent>
+#include <QDockWidget>
+#include <QFileInfo>
+#include <QLabel>
+#include <QLocale>
+#include <QMessageBox>
+#include <QMimeData>
+#include <QSettings>
+#include <QStatusBar>
+#include <QUrl>
+
+#include <vtkVersion.h>
+
+#include "spira/base/version.h"
+#include "spira/ui/application.h"
+#include "spira/ui/document_tree.h"
+#include "spira/ui/log_panel.h"
+#include "spira/ui/recent_files.h"
+#include "spira/ui/scene_view.h"
+#include "spira/ui/task_runner.h"
+
+namespace spira::ui {
+
+namespace {
+
+const char* const kGeometryKey = "mainWindow/geometry";
+const char* const kStateKey = "mainWindow/state";
+const char* const kEdgesKey = "view/showEdges";
+const char* const kBoundingBoxKey = "view/showBoundingBox";
+
+}  // namespace
+
+MainWindow::MainWindow(Document& doc, MainWindowOptions options, QWidget* parent)
+    : QMainWindow(parent), doc_(doc), options_(options)
+{
+  initResources();
+  setObjectName("mainWindow");
+  setWindowIcon(QIcon(":/spira/icons/spira.svg"));
+  setAcceptDrops(true);
+  setDockOptions(QMainWindow::AnimatedDocks | QMainWindow::AllowTabbedDocks);
+
+  view_ = new SceneView(this);
+  view_->setObjectName("sceneView");
+  setCentralWidget(view_);
+
+  tree_ = new DocumentTree(this);
+  treeDock_ = new QDockWidget(tr("Document"), this);
+  treeDock_->setObjectName("documentDock");
+  treeDock_->setWidget(tree_);
+  addDockWidget(Qt::LeftDockWidgetArea, treeDock_);
+
+  log_ = new LogPanel(this);
+  addDockWidget(Qt::BottomDockWidgetArea, log_);
+  // The tree is the taller companion of the view; the log takes only the bottom strip.
+  setCorner(Qt::BottomLeftCorner, Qt::LeftDockWidgetArea);
+  resizeDocks({treeDock_}, {340}, Qt::Horizontal);
+  resizeDocks({log_}, {150}, Qt::Vertical);
+
+  actions_ = Actions::create(this, {treeDock_->toggleViewAction(), log_->toggleViewAction()});
+  recent_ = new RecentFiles(actions_.recentMenu, this);
+  tasks_ = new TaskRunner(this, this);
+
+  meshLabel_ = new QLabel(this);
+  unitsLabel_ = new QLabel(tr("Units: mm"), this);
+  unitsLabel_->setToolTip(tr("Lengths are shown and stored in millimetres"));
+  statusBar()->addPermanentWidget(meshLabel_);
+  statusBar()->addPermanentWidget(unitsLabel_);
+
+  connectActions();
+  if (options_.persistLayout) {
+    QSettings settings;
+    restoreGeometry(settings.value(kGeometryKey).toByteArray());
+    restoreState(settings.value(kStateKey).toByteArray());
+    actions_.showEdges->setChecked(settings.value(kEdgesKey, false).toBool());
+    actions_.showBoundingBox->setChecked(settings.value(kBoundingBoxKey, false).toBool());
+  }
+  view_->setEdgesVisible(actions_.showEdges->isChecked());
+  view_->setBoundingBoxVisible(actions_.showBoundingBox->isChecked());
+
+  subscription_ = doc_.subscribe([this](const ChangeSet& c) { onDocumentChanged(c); });
+  ChangeSet all;
+  all.flags = ~0u;
+  onDocumentChanged(all);
+  log_->info(tr("Spira %1 ready.").arg(QString::fromUtf8(kVersion)));
+}
+
+MainWindow::~MainWindow()
+{
+  doc_.unsubscribe(subscription_);
+  // The worker may still be reading a file; TaskRunner's destructor cancels and joins it.
+  delete tasks_;
+  tasks_ = nullptr;
+}
+
+void MainWindow::connectActions()
+{
+  const Actions& a = actions_;
+  connect(a.importPart, &QAction::triggered, this, &MainWindow::chooseImport);
+  connect(a.openProject, &QAction::triggered, this, &MainWindow::chooseOpen);
+  connect(a.save, &QAction::triggered, this, &MainWindow::saveProject);
+  connect(a.saveAs, &QAction::triggered, this, &MainWindow::chooseSaveAs);
+  connect(a.quit, &QAction::triggered, this, &QWidget::close);
+  connect(a.undo, &QAction::triggered, this, &MainWindow::undo);
+  connect(a.redo, &QAction::triggered, this, &MainWindow::redo);
+  connect(a.showEdges, &QAction::toggled, view_, &SceneView::setEdgesVisible);
+  connect(a.showBoundingBox, &QAction::toggled, view_, &SceneView::setBoundingBoxVisible);
+  connect(a.showSubstrate, &QAction::toggled, this, [this] { refreshScene(false); });
+  connect(a.viewIso, &QAction::triggered, this, [this] { view_->setCameraPreset(CameraPreset::Iso); });
+  connect(a.viewFront, &QAction::triggered, this, [this] { view_->setCameraPreset(CameraPreset::Front); });
+  connect(a.viewTop, &QAction::triggered, this, [this] { view_->setCameraPreset(CameraPreset::Top); });
+  connect(a.viewSide, &QAction::triggered, this, [this] { view_->setCameraPreset(CameraPreset::Side); });
+  connect(a.fitView, &QAction::triggered, view_, &SceneView::fitView);
+  connect(a.about, &QAction::triggered, this, &MainWindow::showAbout);
+  connect(a.aboutQt, &QAction::triggered, qApp, &QApplication::aboutQt);
+  connect(recent_, &RecentFiles::openRequested, this, [this](const QString& path) {
+    if (QFileInfo(path).suffix().compare("spira", Qt::CaseInsensitive) == 0 && !maybeSave()) return;
+    openFile(path);
+  });
+}
+
+void MainWindow::onDocumentChanged(const ChangeSet& changes)
+{
+  const bool part = changes.has(Change::Part);
+  if (part || changes.has(Change::Substrate)) refreshScene(part);
+  if (part || changes.has(Change::Substrate) || changes.has(Change::Cell) || changes.has(Change::Settings) ||
+      changes.has(Change::Results)) {
+    refreshTree();
+  }
+  if (part) refreshStatus();
+  if (changes.has(Change::UndoStack)) refreshUndoActions();
+  if (changes.has(Change::Modified) || changes.has(Change::FilePath)) refreshTitle();
+}
+
+const MeshReport* MainWindow::partReport()
+{
+  const auto& part = doc_.part();
+  if (!part || !part->mesh) return nullptr;
+  if (part->mesh != reportMesh_ || !report_) {
+    report_ = validateMesh(*part->mesh);
+    reportMesh_ = part->mesh;
+  }
+  return &*report_;
+}
+
+void MainWindow::refreshScene(bool partChanged)
+{
+  const std::shared_ptr<const Part>& part = doc_.part();
+  // Re-upload the mesh only when the part value changed: undoing a substrate edit keeps it.
+  if (partChanged && part != shownPart_) {
+    shownPart_ = part;
+    if (!part || !part->mesh) {
+      view_->showPart(nullptr);
+    } else if (part->T_world_part.isApprox(Transform::Identity())) {
+      view_->showPart(part->mesh.get());
+    } else {
+      const TriangleMesh placed = part->mesh->transformed(part->T_world_part);
+      view_->showPart(&placed);
+    }
+  }
+  const Substrate& s = *doc_.substrate();
+  const bool plate = actions_.showSubstrate->isChecked() && s.kind == Substrate::Kind::Plane;
+  view_->showSubstrate(plate ? std::optional<double>(s.planeZ) : std::nullopt);
+}
+
+void MainWindow::refreshTree()
+{
+  tree_->refresh(doc_, partReport());
+}
+
+void MainWindow::refreshUndoActions()
+{
+  const UndoStack& stack = doc_.undoStack();
+  const QString undoName = QString::fromStdString(stack.undoText());
+  const QString redoName = QString::fromStdString(stack.redoText());
+  actions_.undo->setEnabled(doc_.canUndo());
+  actions_.redo->setEnabled(doc_.canRedo());
+  actions_.undo->setText(doc_.canUndo() ? tr("&Undo %1").arg(undoName) : tr("&Undo"));
+  actions_.redo->setText(doc_.canRedo() ? tr("&Redo %1").arg(redoName) : tr("&Redo"));
+  // Toolbar buttons stay short; the tooltip names the step.
+  actions_.undo->setIconText(tr("Undo"));
+  actions_.redo->setIconText(tr("Redo"));
+  actions_.undo->setToolTip(doc_.canUndo() ? tr("Undo %1").arg(undoName) : tr("Nothing to undo"));
+  actions_.redo->setToolTip(doc_.canRedo() ? tr("Redo %1").arg(redoName) : tr("Nothing to redo"));
+}
+
+void MainWindow::refreshTitle()
+{
+  const std::filesystem::path& file = doc_.filePath();
+  const QString name = file.empty() ? tr("Untitled") : QString::fromStdString(file.filename().string());
+  // Qt appends the application display name ("Spira") where the platform shows it.
+  setWindowTitle(QStringLiteral("%1[*]").arg(name));
+  setWindowModified(doc_.isModified());
+}
+
+void MainWindow::refreshStatus()
+{
+  const auto& part = doc_.part();
+  if (!part || !part->mesh) {
+    meshLabel_->setText(tr("No part"));
+    return;
+  }
+  const QLocale loc;
+  meshLabel_->setText(tr("Vertices: %1   Triangles: %2")
+                          .arg(loc.toString(static_cast<qulonglong>(part->mesh->vertexCount())),
+                               loc.toString(static_cast<qulonglong>(part->mesh->faceCount()))));
+}
+
+void MainWindow::reportError(const QString& title, const QString& message, const QString& hint)
+{
+  lastError_ = message;
+  lastHint_ = hint;
+  log_->error(message, hint);
+  if (!options_.interactive) return;
+  QMessageBox box(QMessageBox::Warning, title, message, QMessageBox::Ok, this);
+  if (!hint.isEmpty()) box.setInformativeText(hint);
+  box.exec();
+}
+
+void MainWindow::undo()
+{
+  if (!doc_.canUndo()) return;
+  const QString name = QString::fromStdString(doc_.undoStack().undoText());
+  doc_.undo();
+  log_->info(tr("Undid %1.").arg(name));
+}
+
+void MainWindow::redo()
+{
+  if (!doc_.canRedo()) return;
+  const QString name = QString::fromStdString(doc_.undoStack().redoText());
+  doc_.redo();
+  log_->info(tr("Redid %1.").arg(name));
+}
+
+bool MainWindow::maybeSave()
+{
+  if (!doc_.isModified() || !options_.interactive) return true;
+  const auto answer = QMessageBox::warning(
+      this, tr("Unsaved changes"), tr("The project has unsaved changes. Save them first?"),
+      QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Save);
+  if (answer == QMessageBox::Save) return saveProject();
+  return answer == QMessageBox::Discard;
+}
+
+void MainWindow::closeEvent(QCloseEvent* event)
+{
+  if (busy()) tasks_->cancel();
+  if (!maybeSave()) {
+    event->ignore();
+    return;
+  }
+  if (options_.persistLayout) {
+    QSettings settings;
+    settings.setValue(kGeometryKey, saveGeometry());
+    settings.setValue(kStateKey, saveState());
+    settings.setValue(kEdgesKey, actions_.showEdges->isChecked());
+    settings.setValue(kBoundingBoxKey, actions_.showBoundingBox->isChecked());
+  }
+  event->accept();
+}
+
+void MainWindow::dragEnterEvent(QDragEnterEvent* event)
+{
+  if (event->mimeData()->hasUrls() && event->mimeData()->urls().size() == 1 &&
+      event->mimeData()->urls().first().isLocalFile()) {
+    event->acceptProposedAction();
+  }
+}
+
+void MainWindow::dropEvent(QDropEvent* event)
+{
+  const QString path = event->mimeData()->urls().first().toLocalFile();
+  event->acceptProposedAction();
+  if (QFileInfo(path).suffix().compare("spira", Qt::CaseInsensitive) == 0 && !maybeSave()) return;
+  openFile(path);
+}
+
+void MainWindow::showAbout()
+{
+  QMessageBox box(this);
+  box.setWindowTitle(tr("About Spira"));
+  box.setIconPixmap(windowIcon().pixmap(96, 96));
+  box.setText(tr("<h3>Spira %1</h3><p>Continuous spiral path planning for robotic wire-arc additive "
+                 "manufacturing: one uninterrupted deposition path on a thin-walled part.</p>")
+                  .arg(QString::fromUtf8(kVersion)));
+  box.setInformativeText(
+      tr("Built with Qt %1 and VTK %2.")
+          .arg(QString::fromUtf8(qVersion()), QString::fromUtf8(vtkVersion::GetVTKVersion())));
+  box.exec();
+}
+
+QImage MainWindow::captureImage()
+{
+  view_->render();
+  QApplication::processEvents();
+  return grab().toImage();
+}
+
+}  // namespace spira::ui

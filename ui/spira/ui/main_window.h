@@ -1,0 +1,116 @@
+#pragma once
+
+#include <memory>
+#include <optional>
+
+#include <QImage>
+#include <QMainWindow>
+
+#include "spira/document/document.h"
+#include "spira/mesh/mesh_report.h"
+#include "spira/ui/actions.h"
+
+class QLabel;
+
+namespace spira::ui {
+
+class DocumentTree;
+class LogPanel;
+class RecentFiles;
+class SceneView;
+class TaskRunner;
+
+struct MainWindowOptions {
+  // Restore and save the window layout in QSettings (off for screenshots and tests, whose
+  // pictures must not depend on a user's saved layout).
+  bool persistLayout = true;
+  // Show message boxes and prompts. Off, errors only go to the messages panel and closing never
+  // asks to save (batch screenshots, tests).
+  bool interactive = true;
+};
+
+// Spira's main window: document tree, 3D view, messages, menus and toolbars. It shows the
+// Document it is given and edits it only through the Document's API; every view is refreshed
+// from the Document's change notifications, never from what the window itself just did.
+class MainWindow : public QMainWindow {
+  Q_OBJECT
+
+ public:
+  explicit MainWindow(Document& doc, MainWindowOptions options = {}, QWidget* parent = nullptr);
+  ~MainWindow() override;
+
+  // Opens a project (.spira) or imports a part (any importer extension). Imports run on a worker
+  // thread; fileOpened() reports the outcome either way.
+  void openFile(const QString& path);
+  void importPartFile(const QString& path);
+  bool openProjectFile(const QString& path);
+  // Save to the document's file (asks for one when it has none and the window is interactive).
+  bool saveProject();
+  bool saveProjectAs(const QString& path);
+
+  bool busy() const;
+  // Runs the event loop until a running import has finished.
+  void waitUntilIdle();
+  // The whole window as it is on screen, 3D view included.
+  QImage captureImage();
+  // The last error shown, "message" and "hint" (empty when none yet).
+  QString lastErrorMessage() const { return lastError_; }
+  QString lastErrorHint() const { return lastHint_; }
+
+  Document& document() { return doc_; }
+  const Actions& actions() const { return actions_; }
+  SceneView* sceneView() const { return view_; }
+  DocumentTree* documentTree() const { return tree_; }
+  LogPanel* logPanel() const { return log_; }
+  RecentFiles* recentFiles() const { return recent_; }
+
+ signals:
+  void fileOpened(const QString& path, bool ok);
+
+ protected:
+  void closeEvent(QCloseEvent* event) override;
+  void dragEnterEvent(QDragEnterEvent* event) override;
+  void dropEvent(QDropEvent* event) override;
+
+ private:
+  void connectActions();
+  void onDocumentChanged(const ChangeSet& changes);
+  void refreshScene(bool partChanged);
+  void refreshTree();
+  void refreshUndoActions();
+  void refreshTitle();
+  void refreshStatus();
+  const MeshReport* partReport();
+  void reportError(const QString& title, const QString& message, const QString& hint);
+  bool maybeSave();
+  void chooseImport();
+  void chooseOpen();
+  bool chooseSaveAs();
+  void undo();
+  void redo();
+  void showAbout();
+  QString dialogDirectory() const;
+  void rememberDirectory(const QString& file);
+
+  Document& doc_;
+  MainWindowOptions options_;
+  Document::SubscriptionId subscription_ = 0;
+  SceneView* view_ = nullptr;
+  DocumentTree* tree_ = nullptr;
+  QDockWidget* treeDock_ = nullptr;
+  LogPanel* log_ = nullptr;
+  Actions actions_;
+  RecentFiles* recent_ = nullptr;
+  TaskRunner* tasks_ = nullptr;
+  QLabel* meshLabel_ = nullptr;
+  QLabel* unitsLabel_ = nullptr;
+  // Derived view data, keyed by the mesh it was computed from: the validation report is costly
+  // on large meshes, so it is computed once per mesh (an import hands over its own).
+  std::shared_ptr<const TriangleMesh> reportMesh_;
+  std::optional<MeshReport> report_;
+  std::shared_ptr<const Part> shownPart_;
+  QString lastError_;
+  QString lastHint_;
+};
+
+}  // namespace spira::ui
