@@ -7,6 +7,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <functional>
 #include <string>
@@ -32,6 +33,21 @@ using Clock = std::chrono::steady_clock;
 double since(Clock::time_point t)
 {
   return std::chrono::duration<double>(Clock::now() - t).count();
+}
+
+double cpuSeconds()
+{
+  rusage u{};
+  getrusage(RUSAGE_SELF, &u);
+  return u.ru_utime.tv_sec + u.ru_stime.tv_sec + 1e-6 * (u.ru_utime.tv_usec + u.ru_stime.tv_usec);
+}
+
+std::string loadAverage()
+{
+  std::ifstream in("/proc/loadavg");
+  std::string one;
+  in >> one;
+  return one.empty() ? "?" : one;
 }
 
 double maxRssMiB()
@@ -183,6 +199,7 @@ Row runCgal(const Dome& d, double r, double h)
   using VertexIndex = SurfaceMesh::Vertex_index;
   Row row;
   resetPeakRss();
+  const double cpu0 = cpuSeconds();
   auto t = Clock::now();
   SurfaceMesh sm;
   sm.reserve(d.mesh.vertices.size(), 3 * d.mesh.faces.size() / 2, d.mesh.faces.size());
@@ -250,14 +267,16 @@ Row runCholmod(const spira::SymmetricSparseMatrix& k, int ordering, const std::s
   return row;
 }
 
-void benchmark(double r, double edge, bool withCgal)
+void benchmark(double r, double edge, bool withCgal, int repeats)
 {
   const Dome d = makeDome(r, edge);
-  std::printf("\nDome R = %.0f mm: %zu vertices, %zu triangles, %zu source vertices (the base loop)\n", r,
-              d.mesh.vertices.size(), d.mesh.faces.size(), d.base.size());
+  std::printf(
+      "\nDome R = %.0f mm: %zu vertices, %zu triangles, %zu source vertices (the base loop); load average "
+      "%s\n",
+      r, d.mesh.vertices.size(), d.mesh.faces.size(), d.base.size(), loadAverage().c_str());
   std::vector<Row> rows;
-  rows.push_back(runSpira(d, r));
-  std::printf("  max RSS of the process after (a): %.0f MiB\n", maxRssMiB());
+  rows.push_back(runSpira(d, r, repeats));
+  std::printf("  max RSS (getrusage) of the process with the mesh and (a): %.0f MiB\n", maxRssMiB());
 
   // The heat operator, assembled as Spira does (not timed: (c) is the factorisation alone).
   const spira::MeshAdjacency adjacency = spira::buildMeshAdjacency(d.mesh);
@@ -283,9 +302,17 @@ int main(int argc, char** argv)
   const double r = 60.0;
   // Equilateral triangles of edge e: F = 2 pi R^2 / (sqrt(3)/4 e^2).
   const auto edgeFor = [r](double faces) { return r * std::sqrt(8.0 * M_PI / (std::sqrt(3.0) * faces)); };
-  const bool cgal = !(argc > 1 && std::string(argv[1]) == "--no-cgal");
-  benchmark(r, edgeFor(1.0e6), cgal);
-  benchmark(r, edgeFor(1.0e5), cgal);
-  std::printf("\nmax RSS of the whole process (getrusage): %.0f MiB\n", maxRssMiB());
+  bool cgal = true;
+  int repeats = 1;
+  for (int k = 1; k < argc; ++k) {
+    const std::string arg = argv[k];
+    if (arg == "--no-cgal") cgal = false;
+    if (arg == "--repeat" && k + 1 < argc) repeats = std::max(1, std::atoi(argv[++k]));
+  }
+  std::printf(
+      "bench_field [--no-cgal] [--repeat N]: times are wall-clock seconds; errors are relative to\n"
+      "R * elevation angle on vertices more than 5 mean edges from the base; peak = VmHWM during the row.\n");
+  benchmark(r, edgeFor(1.0e6), cgal, repeats);
+  benchmark(r, edgeFor(1.0e5), cgal, repeats);
   return 0;
 }

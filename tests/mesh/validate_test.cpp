@@ -380,7 +380,8 @@ TEST(Validate, TextAndJsonCarryTheFindings)
   const MeshReport r = validateMesh(m);
   const std::string text = r.toText();
   EXPECT_NE(text.find("Mesh: 5 vertices, 2 faces, 6 edges"), std::string::npos) << text;
-  EXPECT_NE(text.find("Issue: 1 non-manifold vertices"), std::string::npos) << text;
+  EXPECT_NE(text.find("Issue: 1 non-manifold vertex (faces touch only at the vertex)"), std::string::npos)
+      << text;
   EXPECT_NE(text.find("vertex 0 at (0, 0, 0) mm"), std::string::npos) << text;
   EXPECT_NE(text.find("Boundary loops: 2"), std::string::npos) << text;
   EXPECT_NE(text.find("Connected components: 1"), std::string::npos) << text;

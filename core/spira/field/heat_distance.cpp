@@ -115,7 +115,6 @@ void HeatDistanceSolver::Impl::build(const TriangleMesh& mesh, Progress& progres
   progress.checkCancel();
   start = Clock::now();
   // The two factorisations are independent: on two cores they cost the time of one.
-  const SingleThreadedBlas oneBlasThreadEach;
   tbb::parallel_invoke([&] { heatFactor = std::make_unique<CholeskyFactor>(*analysis, heat); },
                        [&] { poissonFactor = std::make_unique<CholeskyFactor>(*analysis, poisson); });
   setup.factorSeconds = seconds(start);
@@ -153,7 +152,6 @@ std::vector<double> HeatDistanceSolver::Impl::heatSolve(const std::vector<int>& 
   std::vector<double> deltaD = delta;
   for (int v = 0; v < n; ++v)
     if (fixed[v]) deltaD[v] = 0.0;
-  const SingleThreadedBlas oneBlasThreadEach;
   tbb::parallel_invoke([&] { uN = heatFactor->solve(delta); }, [&] { uD = dirichletFactor->solve(deltaD); });
   for (int v = 0; v < n; ++v) uN[v] = 0.5 * (uN[v] + uD[v]);
   return uN;

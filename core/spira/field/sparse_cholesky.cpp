@@ -163,6 +163,7 @@ CholeskyFactor::CholeskyFactor(const CholeskyAnalysis& analysis, const Symmetric
   impl_->factor = cholmod_copy_factor(analysis.impl_->symbolic, &impl_->common);
   if (!impl_->factor) fail(impl_->common, "copying the Cholesky analysis");
   cholmod_sparse a = view(matrix);
+  const SingleThreadedBlas oneThread;
   const int ok = cholmod_factorize(&a, impl_->factor, &impl_->common);
   if (!ok || impl_->common.status == CHOLMOD_NOT_POSDEF || impl_->factor->minor < impl_->factor->n) {
     if (impl_->common.status == CHOLMOD_NOT_POSDEF || (ok && impl_->factor->minor < impl_->factor->n))
@@ -192,6 +193,7 @@ std::vector<double> CholeskyFactor::solve(const std::vector<double>& rhs) const
   b.x = const_cast<double*>(rhs.data());
   b.xtype = CHOLMOD_REAL;
   b.dtype = CHOLMOD_DOUBLE;
+  const SingleThreadedBlas oneThread;
   cholmod_dense* x = cholmod_solve(CHOLMOD_A, impl_->factor, &b, &impl_->common);
   if (!x) fail(impl_->common, "sparse Cholesky solve");
   const double* xs = static_cast<const double*>(x->x);

@@ -37,6 +37,9 @@ class CholeskyAnalysis {
 // A numeric supernodal Cholesky factorisation (CHOLMOD) of one symmetric positive definite
 // matrix. Each factor has its own CHOLMOD workspace, so different factors can be computed and
 // used on different threads at once; one factor solves on one thread at a time.
+// BLAS runs single-threaded inside (see SingleThreadedBlas): parallelism comes from factorising
+// independent matrices concurrently, which on surface meshes beats a threaded BLAS (whose
+// fronts are small) and does not collapse when the cores are shared.
 // Throws AlgorithmError if the matrix is not positive definite or memory runs out.
 class CholeskyFactor {
  public:

@@ -22,22 +22,26 @@ std::string point(const Vec3& p)
   return "(" + num(p.x()) + ", " + num(p.y()) + ", " + num(p.z()) + ")";
 }
 
-// Human-readable issue names for the text report; meshIssueName() gives the stable JSON keys.
-const char* issueLabel(MeshIssueKind kind)
+// Human-readable issue names for the text report, singular and plural; meshIssueName() gives the
+// stable JSON keys.
+std::string issueLabel(MeshIssueKind kind, size_t count)
 {
+  const bool one = count == 1;
   switch (kind) {
     case MeshIssueKind::NonFiniteCoordinate:
-      return "non-finite vertex coordinates";
+      return one ? "vertex with a non-finite coordinate" : "vertices with non-finite coordinates";
     case MeshIssueKind::DegenerateFace:
-      return "degenerate faces (repeated vertex or zero area)";
+      return std::string(one ? "degenerate face" : "degenerate faces") + " (repeated vertex or zero area)";
     case MeshIssueKind::DuplicateFace:
-      return "duplicate faces";
+      return one ? "duplicate face" : "duplicate faces";
     case MeshIssueKind::NonManifoldEdge:
-      return "non-manifold edges (more than two faces)";
+      return std::string(one ? "non-manifold edge" : "non-manifold edges") + " (more than two faces)";
     case MeshIssueKind::NonManifoldVertex:
-      return "non-manifold vertices (faces touch only at the vertex)";
+      return std::string(one ? "non-manifold vertex" : "non-manifold vertices") +
+             " (faces touch only at the vertex)";
     case MeshIssueKind::InconsistentOrientation:
-      return "faces with inconsistent orientation";
+      return std::string(one ? "face" : "faces") +
+             " with inconsistent orientation (flipped against the neighbours)";
   }
   return "unknown issue";
 }
@@ -134,7 +138,7 @@ std::string MeshReport::toText() const
   s << "Surface area: " << num(area) << " mm^2; mean edge length " << num(meanEdgeLength) << " mm\n";
   if (issues.empty()) s << "Issues: none\n";
   for (const MeshIssue& i : issues) {
-    s << "Issue: " << i.count << " " << issueLabel(i.kind);
+    s << "Issue: " << i.count << " " << issueLabel(i.kind, i.count);
     if (i.count > i.elements.size()) s << "; the first " << i.elements.size() << ":";
     s << "\n";
     for (size_t k = 0; k < i.elements.size(); ++k)

@@ -38,16 +38,17 @@ struct TriangleMesh {
   size_t faceCount() const { return faces.size(); }
   bool empty() const { return faces.empty(); }
 
-  BoundingBox bounds() const;
+  BoundingBox bounds() const;  // of the finite vertices (a NaN vertex would poison the box)
   // Unnormalised face normal (length = 2 * area).
   Vec3 faceNormalScaled(size_t f) const;
   Vec3 faceNormal(size_t f) const;
   double faceArea(size_t f) const;
   double area() const;
-  double meanEdgeLength() const;
+  double meanEdgeLength() const;  // each undirected edge counted once
   // Area-weighted vertex normals (unit length; zero for isolated vertices).
   std::vector<Vec3> vertexNormals() const;
 
+  // Maps every vertex through T (mm). A mirroring T also reverses the faces, so normals stay outward.
   void transform(const Transform& T);
   TriangleMesh transformed(const Transform& T) const;
 
