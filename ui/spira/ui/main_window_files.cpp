@@ -41,11 +41,12 @@ void logImported(LogPanel* log, const QString& path, const ImportedPart& r)
 {
   const QLocale loc;
   const MeshReport& rep = r.report;
-  log->info(QObject::tr("Imported %1: %2 triangles, %3 vertices, %4 part (%5 boundary loops), %6 s.")
+  const QString loops = rep.boundaryLoops.size() == 1 ? QObject::tr("1 boundary loop")
+                                                      : QObject::tr("%1 boundary loops").arg(rep.boundaryLoops.size());
+  log->info(QObject::tr("Imported %1: %2 triangles, %3 vertices, %4 part (%5), %6 s.")
                 .arg(QFileInfo(path).fileName(), loc.toString(static_cast<qulonglong>(rep.faceCount)),
                      loc.toString(static_cast<qulonglong>(rep.vertexCount)),
-                     QString::fromUtf8(partClassName(rep.partClass)))
-                .arg(rep.boundaryLoops.size())
+                     QString::fromUtf8(partClassName(rep.partClass)), loops)
                 .arg(r.seconds.total(), 0, 'f', 2));
   for (const std::string& w : r.warnings) log->warning(fromStd(w));
   for (const MeshIssue& issue : rep.issues) {
