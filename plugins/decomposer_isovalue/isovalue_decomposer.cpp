@@ -17,7 +17,7 @@ ParamSchema makeSchema()
   std::vector<ParamDef> defs;
   {
     ParamDef d;
-    d.key = "n_points";
+    d.key = "points_per_rev";
     d.type = ParamType::Int;
     d.defaultValue = std::int64_t{360};
     d.min = 8;
@@ -89,7 +89,7 @@ DecomposeResult IsovalueDecomposer::decompose(const DecomposeInput& input, const
   const ParamSet values = params.withDefaults(schema_);
   schema_.validate(values);
   IsoDecompositionOptions options;
-  options.pointsPerContour = static_cast<size_t>(values.getInt("n_points"));
+  options.pointsPerContour = static_cast<size_t>(values.getInt("points_per_rev"));
   options.levelSpacing = values.internal(schema_, "level_spacing");
   const bool open = input.partClass == PartClass::Open;
 

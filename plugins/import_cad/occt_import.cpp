@@ -22,7 +22,9 @@
 #include <TopoDS_Face.hxx>
 #include <TopoDS_Shape.hxx>
 
+#include <algorithm>
 #include <cctype>
+#include <fstream>
 #include <mutex>
 #include <thread>
 
@@ -108,6 +110,34 @@ std::optional<LengthUnit> unitFromIgesFlag(int flag)
       return LengthUnit::Centimetre;
     default:
       return std::nullopt;
+  }
+}
+
+std::string fileHead(const std::filesystem::path& file, size_t bytes)
+{
+  std::ifstream in(file, std::ios::binary);
+  std::string head(bytes, '\0');
+  in.read(head.data(), static_cast<std::streamsize>(bytes));
+  head.resize(static_cast<size_t>(std::max<std::streamsize>(in.gcount(), 0)));
+  return head;
+}
+
+// OpenCASCADE's parsers print noise and, for IGES, leak their buffers on files that are not
+// STEP or IGES at all: such files are refused here from their first bytes.
+void checkSignature(const std::filesystem::path& file, CadFormat format)
+{
+  std::string head = fileHead(file, 512);
+  if (head.compare(0, 3, "\xEF\xBB\xBF") == 0) head.erase(0, 3);
+  if (format == CadFormat::Step) {
+    const size_t start = head.find_first_not_of(" \t\r\n");
+    if (start == std::string::npos || head.compare(start, 13, "ISO-10303-21;") != 0)
+      throw unreadable(file, format, "it does not start with 'ISO-10303-21;'");
+  } else if (format == CadFormat::Iges) {
+    // Fixed-format IGES: 80-column records with the section letter in column 73 (S or G first;
+    // C for compressed files).
+    const std::string line = head.substr(0, head.find('\n'));
+    if (line.size() < 73 || std::string("SGC").find(line[72]) == std::string::npos)
+      throw unreadable(file, format, "its first line has no IGES section letter in column 73");
   }
 }
 
@@ -230,6 +260,7 @@ CadMesh importCadFile(const std::filesystem::path& file, CadFormat format,
   CadMesh out;
   try {
     TopoDS_Shape shape;
+    checkSignature(file, format);
     switch (format) {
       case CadFormat::Step:
         shape = readStep(file, progress, out);

@@ -26,7 +26,7 @@ TEST(DecomposerIsovalue, IsRegisteredWithASoundSchema)
   EXPECT_FALSE(p.label().empty());
   EXPECT_FALSE(p.description().empty());
   EXPECT_TRUE(p.schema().selfCheck().empty());
-  const ParamDef* n = p.schema().find("n_points");
+  const ParamDef* n = p.schema().find("points_per_rev");
   ASSERT_NE(n, nullptr);
   EXPECT_EQ(std::get<std::int64_t>(n->defaultValue), 360);
   const ParamDef* s = p.schema().find("level_spacing");
@@ -73,7 +73,7 @@ TEST(DecomposerIsovalue, DecomposesThroughTheRegistryWithParameters)
   const std::vector<double> field = test::heightField(tube, 1.0 / H);
   DecomposeInput in{tube, r.partClass, r.boundaryLoops[0], r.boundaryLoops[1], std::nullopt, &field};
   ParamSet params;
-  params.set("n_points", std::int64_t{90});
+  params.set("points_per_rev", std::int64_t{90});
   params.set("level_spacing", 3.0);
   NullProgress progress;
   const DecomposeResult res = isovalue().decompose(in, params, progress);
@@ -83,7 +83,7 @@ TEST(DecomposerIsovalue, DecomposesThroughTheRegistryWithParameters)
     ASSERT_EQ(l.size(), 11u);  // base, 9 contours 3 mm apart, rim
     EXPECT_NEAR((l.back() - l.front()).norm(), H, 1e-9);
   }
-  params.set("n_points", std::int64_t{2});
+  params.set("points_per_rev", std::int64_t{2});
   EXPECT_THROW(isovalue().decompose(in, params, progress), InputError);
 }
 
@@ -101,7 +101,7 @@ TEST(DecomposerIsovalue, ComputesTheHarmonicFieldOfAnOpenPart)
   const MeshReport r = validateMesh(tube);
   DecomposeInput in{tube, r.partClass, r.boundaryLoops[0], r.boundaryLoops[1], std::nullopt};
   ParamSet params;
-  params.set("n_points", std::int64_t{120});
+  params.set("points_per_rev", std::int64_t{120});
   NullProgress progress;
   const DecomposeResult res = isovalue().decompose(in, params, progress);
   ASSERT_EQ(res.generatrices.lines.size(), 120u);
@@ -120,7 +120,7 @@ TEST(DecomposerIsovalue, ComputesTheGeodesicDistanceOfAClosedPart)
   const MeshReport r = validateMesh(dome);
   DecomposeInput in{dome, r.partClass, r.boundaryLoops[0], std::nullopt, std::nullopt};
   ParamSet params;
-  params.set("n_points", std::int64_t{120});
+  params.set("points_per_rev", std::int64_t{120});
   NullProgress progress;
   const DecomposeResult res = isovalue().decompose(in, params, progress);
   const Generatrices& g = res.generatrices;

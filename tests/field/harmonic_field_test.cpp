@@ -35,7 +35,7 @@ TEST(HarmonicField, ConeIsLogarithmicInRadius)
     const double radius = cone.mesh.vertices[v].head<2>().norm();
     worst = std::max(worst, std::abs(u[v] - std::log(radius / r0) / std::log(r1 / r0)));
   }
-  EXPECT_LT(worst, 1e-3);
+  EXPECT_LT(worst, 1e-4);  // measured 1.6e-5 at edge r0 / 50
   // Not simply z / H: the field is curved along the slant.
   double offLinear = 0.0;
   for (size_t v = 0; v < u.size(); ++v)

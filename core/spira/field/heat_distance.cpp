@@ -109,6 +109,8 @@ void HeatDistanceSolver::Impl::build(const TriangleMesh& mesh, Progress& progres
 
   start = Clock::now();
   analysis = std::make_unique<CholeskyAnalysis>(heat, geometricNestedDissection(points, adjacency));
+  adjacency.neighbors = std::vector<int>();  // only the ordering needed them
+  adjacency.neighborStart = std::vector<int>();
   setup.analysisSeconds = seconds(start);
   setup.factorNonZeros = analysis->factorNonZeros();
   progress.report(0.25, "field: factorising");

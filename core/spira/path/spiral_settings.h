@@ -39,9 +39,9 @@ struct SpiralSettings {
   // this many by blending neighbours (see resample_generatrices.h).
   int pointsPerRevolution = 0;
   LayerMode layerMode = LayerMode::Floor;
-  // UniformHelix by default: with ToNominal the seam step g = 0.1 h (at ±10 %) is climbed in one
-  // segment, whose true height d cos(theta) leaves the window wherever revolutions are short (on a
-  // 1-degree decomposition, on every revolution of radius below 57 h when steps sit at h_min).
+  // UniformHelix by default: with ToNominal every seam rises d - 0.9 h in one segment (at ±10 %;
+  // 0.1 h in centred mode), and its true height d cos(theta) leaves the window wherever
+  // neighbouring generatrices are close (1-degree dome: within about r = 11 h of the closure point).
   StartupTransition startupTransition = StartupTransition::UniformHelix;
   Termination termination = Termination::Ramps;
   // Eq. 3.15 tolerance, as a fraction of h: a height counts as outside the window only beyond
@@ -51,7 +51,9 @@ struct SpiralSettings {
   // r = 1.6 h).
   double heightTolerance = 0.005;
   // Closed parts: trailing revolutions shorter than this (mm) are replaced by the closure point
-  // alone, so the path does not end with many copies of it. 0 means h.
+  // alone, so the path does not end with many copies of it. 0 means h, which folds only the last
+  // revolution (the closure point itself); about pi times the bead width also folds the rings
+  // narrower than the bead.
   double minRevolutionLength = 0.0;
 };
 

@@ -5,8 +5,8 @@ namespace spira {
 // Where the transition revolution of the start-up ends.
 enum class StartupTransition {
   // h_min -> h, as the thesis's Figs 3.5 and 4.7 show (spec §3.2). The spiral then climbs
-  // S = j_full Δ + h - h_min per revolution and keeps a seam step g = h - S = h_min - j_full Δ
-  // (0.1 h at ±10 %) that the torch climbs in one segment at the end of every revolution.
+  // S = j_full Δ + h - h_min per revolution whatever the layer step d of the modulated phase, so
+  // every seam rises d - S in one segment: 0.1 h at ±10 % when d = h, about 0 when d = h_min.
   ToNominal,
   // The thesis's text instead ("a gap of h between the first and the last point of this layer"):
   // the start-up climbs exactly what a uniform helix of the modulated phase climbs, so the seam is
@@ -26,10 +26,10 @@ enum class StartupTransition {
 // revolution (Eq. 3.2: Δh_j = j Δ). The rule used here (spec §3.2 "Implementable rule") is
 //   j_full = max{ j >= 0 : j Δ < h }    full ramps h_min -> h_max
 //   one transition ramp h_min -> h_T   (h_T = h by default, see StartupTransition)
-//   one constant revolution at h
+//   one constant revolution at h       (at c with UniformHelix)
 //   n_steplayer = j_full + 2           (4 + 2 = 6 at ±10 %, Table 3.1)
-// With h_T = h the seam step left is g = h_min - j_full Δ, and -(h - h_min) < g <= h_max - h: never
-// more than a half-width of the window (0.1 h at ±10 %).
+// With h_T = h, the seam step left for layers of h is g = h_min - j_full Δ, and
+// -(h - h_min) < g <= h_max - h: never more than a half-width of the window (0.1 h at ±10 %).
 //
 // Edge cases:
 // - Δ >= h (very wide window): j_full = 0; the start-up is the transition ramp and the constant

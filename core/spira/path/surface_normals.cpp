@@ -13,13 +13,13 @@ std::vector<std::vector<Vec3>> estimateNormals(const Generatrices& g)
   if (n < 3)
     throw InputError("surface normals cannot be estimated from fewer than 3 generatrices",
                      "supply normals with the generatrices or decompose the part into more generatrices");
-  // Positions only are read from the neighbours; these normals are placeholders.
-  std::vector<std::vector<Vec3>> placeholder(n);
+  // Only positions are read from the neighbours; their normals are never used.
+  std::vector<std::vector<Vec3>> unusedNormals(n);
   std::vector<ArcLengthPolyline> arcs;
   arcs.reserve(n);
   for (size_t i = 0; i < n; ++i) {
-    placeholder[i].assign(g.lines[i].size(), Vec3::UnitZ());
-    arcs.emplace_back(g.lines[i], placeholder[i]);
+    unusedNormals[i].assign(g.lines[i].size(), Vec3::UnitZ());
+    arcs.emplace_back(g.lines[i], unusedNormals[i]);
   }
 
   std::vector<std::vector<Vec3>> normals(n);

@@ -91,6 +91,13 @@ PlanOutput planPart(const PluginRegistry& registry, const PlanRequest& request, 
   out.spiral = buildSpiral(out.generatrices, spiralSettings, sp);
   clock.lap("spiral");
   out.process = applyProcess(out.spiral.trajectory, processSettings);
+  if (!out.process.violations.empty()) {
+    const ProcessViolation& first = out.process.violations.front();
+    out.warnings.push_back(
+        std::to_string(out.process.violations.size()) +
+        " point(s) need speeds outside the process limits and were clamped to them (first: point " +
+        std::to_string(first.point) + ", " + processViolationName(first.kind) + ")");
+  }
   clock.lap("process");
   progress.report(1.0, "done");
   return out;

@@ -42,8 +42,10 @@ struct PlanOutput {
   StageTimings timings;
   std::vector<std::string> warnings;
 
-  // Within the window (Eq. 3.6 and 3.15) and within the process limits.
-  bool feasible() const { return spiral.report.feasible && process.withinLimits; }
+  // Within the process window (Eq. 3.6 and 3.15 on the modulated revolutions). Process-limit
+  // violations do not make a plan infeasible: the speeds are clamped to the limits and each
+  // violation is reported (they arise where the spiral degenerates, at a closure point).
+  bool feasible() const { return spiral.report.feasible; }
 };
 
 // Runs the CTPP pipeline: part topology, scalar field (harmonic for open parts; geodesic distance

@@ -29,7 +29,8 @@ class ImporterPlugin : public Plugin {
   // Lower-case extensions without the dot, e.g. {"stl"}.
   virtual std::vector<std::string> extensions() const = 0;
   // Throws InputError/IoError with a one-line cause and a hint for unreadable input.
-  virtual ImportedMesh read(const std::filesystem::path& file, const ParamSet& params, Progress& progress) const = 0;
+  virtual ImportedMesh read(const std::filesystem::path& file, const ParamSet& params,
+                            Progress& progress) const = 0;
 };
 
 }  // namespace spira

@@ -1,7 +1,6 @@
 #include "spira/plugin/parameter.h"
 
 #include <cmath>
-#include <regex>
 #include <set>
 #include <sstream>
 
@@ -76,6 +75,14 @@ const char* paramTypeName(ParamType t)
       return "path";
   }
   return "unknown";
+}
+
+bool isSnakeCaseWord(const std::string& s)
+{
+  if (s.empty() || s[0] < 'a' || s[0] > 'z') return false;
+  for (char c : s)
+    if (!((c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_')) return false;
+  return true;
 }
 
 std::string paramValueToString(const ParamValue& v)
@@ -189,10 +196,9 @@ ParamValue ParamSchema::parse(const std::string& key, const std::string& text) c
 std::vector<std::string> ParamSchema::selfCheck() const
 {
   std::vector<std::string> problems;
-  static const std::regex snake("[a-z][a-z0-9_]*");
   std::set<std::string> seen;
   for (const auto& d : defs_) {
-    if (!std::regex_match(d.key, snake)) problems.push_back("key '" + d.key + "' is not snake_case");
+    if (!isSnakeCaseWord(d.key)) problems.push_back("key '" + d.key + "' is not snake_case");
     if (!seen.insert(d.key).second) problems.push_back("key '" + d.key + "' declared twice");
     if (d.label.empty()) problems.push_back("key '" + d.key + "' has no label");
     if (d.tooltip.empty()) problems.push_back("key '" + d.key + "' has no tooltip");

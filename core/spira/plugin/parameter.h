@@ -90,4 +90,7 @@ class ParamSet {
 
 std::string paramValueToString(const ParamValue& v);
 
+// True for a snake_case word: a lowercase letter, then lowercase letters, digits or '_'.
+bool isSnakeCaseWord(const std::string& s);
+
 }  // namespace spira

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cctype>
-#include <regex>
 
 #include "spira/base/error.h"
 
@@ -25,8 +24,14 @@ const char* pluginKindName(PluginKind k)
 
 bool isValidPluginId(const std::string& id)
 {
-  static const std::regex re("[a-z][a-z0-9_]*(\\.[a-z][a-z0-9_]*)+");
-  return std::regex_match(id, re);
+  size_t words = 0, start = 0;
+  while (start <= id.size()) {
+    const size_t dot = std::min(id.find('.', start), id.size());
+    if (!isSnakeCaseWord(id.substr(start, dot - start))) return false;
+    ++words;
+    start = dot + 1;
+  }
+  return words >= 2;
 }
 
 void PluginRegistry::add(std::unique_ptr<Plugin> plugin)

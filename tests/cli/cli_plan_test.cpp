@@ -1,0 +1,252 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "cli_runner.h"
+#include "spira/base/units.h"
+#include "spira/io/mesh_writers.h"
+#include "support/test_support.h"
+
+namespace fs = std::filesystem;
+
+namespace spira::test {
+namespace {
+
+fs::path sample(const std::string& name)
+{
+  return sourceDir() / "resources" / "samples" / name;
+}
+
+struct CsvRow {
+  Vec3 p, n, t, b;
+  int rev = 0, gen = 0;
+  double height = 0, ts = 0, wfs = 0;
+  int arc = 0;
+};
+
+std::vector<CsvRow> readTrajectory(const fs::path& file, std::string* header)
+{
+  std::ifstream in(file);
+  std::getline(in, *header);
+  std::vector<CsvRow> rows;
+  std::string line;
+  while (std::getline(in, line)) {
+    std::stringstream s(line);
+    std::string cell;
+    std::vector<double> v;
+    while (std::getline(s, cell, ',')) v.push_back(std::stod(cell));
+    EXPECT_EQ(v.size(), 19u);
+    CsvRow r;
+    r.p = Vec3(v[1], v[2], v[3]);
+    r.n = Vec3(v[4], v[5], v[6]);
+    r.t = Vec3(v[7], v[8], v[9]);
+    r.b = Vec3(v[10], v[11], v[12]);
+    r.rev = static_cast<int>(v[13]);
+    r.gen = static_cast<int>(v[14]);
+    r.height = v[15];
+    r.ts = v[16];
+    r.wfs = v[17];
+    r.arc = static_cast<int>(v[18]);
+    rows.push_back(r);
+  }
+  return rows;
+}
+
+nlohmann::json readJson(const fs::path& file)
+{
+  std::ifstream in(file);
+  return nlohmann::json::parse(in);
+}
+
+TEST(CliPlan, CylinderWritesTheContractedFiles)
+{
+  TempDir dir;
+  const CliRun r = runCli({"plan", sample("open_cylinder.stl").string(), "-o", dir.path().string(), "--h",
+                           "1", "--points-per-rev", "180"});
+  ASSERT_EQ(r.exitCode, 0) << r.err << r.out;
+  const auto report = readJson(dir / "report.json");
+  EXPECT_EQ(report["part_type"], "open");
+  EXPECT_EQ(report["strategy"], "isovalue");
+  EXPECT_EQ(report["n_generatrices"], 180);
+  EXPECT_EQ(report["n_startup_revolutions"], 6);
+  EXPECT_TRUE(report["feasible"].get<bool>());
+  EXPECT_EQ(report["violations"], 0);
+  EXPECT_TRUE(report["closure_point"].is_null());
+  for (const char* key :
+       {"generatrix_length_min", "generatrix_length_max", "n_revolutions", "n_points", "height_min",
+        "height_max", "height_mean", "path_length", "build_time_s", "timings_s", "warnings"})
+    EXPECT_TRUE(report.contains(key)) << key;
+  EXPECT_NEAR(report["generatrix_length_min"].get<double>(), 100.0, 0.2);
+  EXPECT_NEAR(report["height_mean"].get<double>(), 1.0, 0.01);
+
+  std::string header;
+  const auto rows = readTrajectory(dir / "trajectory.csv", &header);
+  EXPECT_EQ(header, "index,x,y,z,nx,ny,nz,tx,ty,tz,bx,by,bz,rev,gen,height,ts,wfs,arc");
+  ASSERT_EQ(rows.size(), report["n_points"].get<size_t>());
+  double zMax = 0.0;
+  for (const auto& row : rows) {
+    zMax = std::max(zMax, row.p.z());
+    EXPECT_NEAR(row.n.norm(), 1.0, 1e-9);
+    EXPECT_NEAR(row.b.norm(), 1.0, 1e-9);
+    EXPECT_NEAR(row.n.cross(row.t).dot(row.b), 1.0, 1e-9);  // b = n x t
+    EXPECT_NEAR(row.wfs, 2.3, 1e-9);                        // synergic: constant wire feed, m/min
+    EXPECT_EQ(row.arc, 1);
+  }
+  EXPECT_NEAR(zMax, 100.0, 1e-6);
+}
+
+TEST(CliPlan, HeightsRecomputedFromTheCsvMatchTheHeightColumn)
+{
+  TempDir dir;
+  const CliRun r =
+      runCli({"plan", sample("cone.stl").string(), "-o", dir.path().string(), "--points-per-rev", "120"});
+  ASSERT_EQ(r.exitCode, 0) << r.err << r.out;
+  std::string header;
+  const auto rows = readTrajectory(dir / "trajectory.csv", &header);
+  // h = d cos(theta): the step along the generatrix since the previous revolution, projected on b.
+  std::map<std::pair<int, int>, Vec3> at;
+  for (const auto& row : rows) at[{row.rev, row.gen}] = row.p;
+  size_t checked = 0;
+  for (const auto& row : rows) {
+    auto prev = at.find({row.rev - 1, row.gen});
+    if (prev == at.end()) continue;
+    const double h = (row.p - prev->second).dot(row.b);
+    EXPECT_NEAR(h, row.height, 1e-6) << "rev " << row.rev << " gen " << row.gen;
+    ++checked;
+  }
+  EXPECT_GT(checked, rows.size() / 2);
+  // Synergic mode: the travel speed is in phase opposition with the deposit.
+  const auto report = readJson(dir / "report.json");
+  double tsAtMin = 0, tsAtMax = 0, hMin = 1e9, hMax = 0;
+  for (const auto& row : rows) {
+    if (row.height < hMin) hMin = row.height, tsAtMin = row.ts;
+    if (row.height > hMax) hMax = row.height, tsAtMax = row.ts;
+  }
+  EXPECT_GT(tsAtMin, tsAtMax);
+}
+
+TEST(CliPlan, DomeEndsAtTheClosurePoint)
+{
+  TempDir dir;
+  const CliRun r =
+      runCli({"plan", sample("dome.stl").string(), "-o", dir.path().string(), "--points-per-rev", "90"});
+  ASSERT_TRUE(r.exitCode == 0 || r.exitCode == 4) << r.err;
+  const auto report = readJson(dir / "report.json");
+  EXPECT_EQ(report["part_type"], "closed");
+  ASSERT_TRUE(report["closure_point"].is_array());
+  const Vec3 c(report["closure_point"][0], report["closure_point"][1], report["closure_point"][2]);
+  EXPECT_LT((c - Vec3(0, 0, 60)).norm(), 0.5);
+  std::string header;
+  const auto rows = readTrajectory(dir / "trajectory.csv", &header);
+  ASSERT_FALSE(rows.empty());
+  EXPECT_LT((rows.back().p - c).norm(), 1e-6);
+}
+
+// An open wall whose top edge is slanted: generatrices from H - a to H + a long.
+TriangleMesh slantedTube(double radius, double height, double slant, int segments, int rings)
+{
+  TriangleMesh m;
+  for (int j = 0; j <= rings; ++j)
+    for (int i = 0; i < segments; ++i) {
+      const double a = 2.0 * kPi * i / segments;
+      const double top = height + slant * std::cos(a);
+      m.vertices.emplace_back(radius * std::cos(a), radius * std::sin(a), top * j / rings);
+    }
+  for (int j = 0; j < rings; ++j)
+    for (int i = 0; i < segments; ++i) {
+      const int i1 = (i + 1) % segments;
+      const int a = j * segments + i, b = j * segments + i1, c = (j + 1) * segments + i1,
+                d = (j + 1) * segments + i;
+      m.faces.push_back({a, b, c});
+      m.faces.push_back({a, c, d});
+    }
+  return m;
+}
+
+TEST(CliPlan, TooDifferentGeneratricesAreInfeasibleWithTheReportWritten)
+{
+  TempDir dir;
+  writeMesh(slantedTube(40.0, 100.0, 20.0, 120, 60), dir / "slanted.stl");
+  const auto out = dir / "plan";
+  const CliRun r =
+      runCli({"plan", (dir / "slanted.stl").string(), "-o", out.string(), "--points-per-rev", "120"});
+  EXPECT_EQ(r.exitCode, 4) << r.err << r.out;
+  const auto report = readJson(out / "report.json");
+  EXPECT_FALSE(report["feasible"].get<bool>());
+  EXPECT_GT(report["violations"].get<int>(), 0);
+  EXPECT_TRUE(fs::exists(out / "trajectory.csv"));
+  EXPECT_NE(r.out.find("INFEASIBLE"), std::string::npos);
+}
+
+TEST(CliPlan, BadSettingsAreRejectedBeforeAnythingIsWritten)
+{
+  TempDir dir;
+  writeBytes(dir / "nonmono.csv", "height_mm,travel_speed_mm_s\n1.8,3.0\n2.0,3.5\n2.2,2.5\n");
+  const std::string part = sample("open_cylinder.stl").string();
+  const std::vector<std::vector<std::string>> cases = {
+      {"--h-min", "2.2", "--h-max", "1.8"},
+      {"--h", "3", "--h-min", "1.8", "--h-max", "2.2"},
+      {"--wfs", "-1"},
+      {"--ts", "0"},
+      {"--calibration", (dir / "nonmono.csv").string()},
+      {"--calibration", (dir / "missing.csv").string()},
+      {"--strategy", "nonexistent"},
+  };
+  for (const auto& extra : cases) {
+    const auto out = dir / "out";
+    std::vector<std::string> args = {"plan", part, "-o", out.string()};
+    args.insert(args.end(), extra.begin(), extra.end());
+    const CliRun r = runCli(args);
+    EXPECT_EQ(r.exitCode, 3) << extra[0] << ": " << r.err;
+    EXPECT_FALSE(fs::exists(out / "report.json")) << extra[0];
+    EXPECT_FALSE(fs::exists(out / "trajectory.csv")) << extra[0];
+    EXPECT_NE(r.err.find(" ("), std::string::npos) << "no hint: " << r.err;
+  }
+}
+
+TEST(CliField, WritesCsvAndVtp)
+{
+  TempDir dir;
+  const CliRun csv = runCli(
+      {"field", sample("open_cylinder.stl").string(), "--kind", "harmonic", "-o", (dir / "h.csv").string()});
+  ASSERT_EQ(csv.exitCode, 0) << csv.err;
+  std::ifstream in(dir / "h.csv");
+  std::string line;
+  std::getline(in, line);
+  EXPECT_EQ(line, "vertex,x,y,z,value");
+  size_t rows = 0;
+  while (std::getline(in, line)) {
+    std::stringstream s(line);
+    std::string cell;
+    std::vector<double> v;
+    while (std::getline(s, cell, ',')) v.push_back(std::stod(cell));
+    ASSERT_EQ(v.size(), 5u);
+    EXPECT_NEAR(v[4], v[3] / 100.0, 1e-6);  // harmonic field of a straight tube is z / H
+    ++rows;
+  }
+  EXPECT_EQ(rows, 8007u);
+  const CliRun vtp =
+      runCli({"field", sample("dome.stl").string(), "--kind", "geodesic", "-o", (dir / "g.vtp").string()});
+  ASSERT_EQ(vtp.exitCode, 0) << vtp.err;
+  std::ifstream v(dir / "g.vtp");
+  const std::string text((std::istreambuf_iterator<char>(v)), {});
+  EXPECT_NE(text.find("<VTKFile type=\"PolyData\""), std::string::npos);
+  EXPECT_NE(text.find("NumberOfPoints=\"8837\""), std::string::npos);
+  EXPECT_EQ(
+      runCli({"field", sample("dome.stl").string(), "--kind", "harmonic", "-o", (dir / "x.csv").string()})
+          .exitCode,
+      3);
+  EXPECT_EQ(
+      runCli({"field", sample("dome.stl").string(), "--sources", "99999999", "-o", (dir / "x.csv").string()})
+          .exitCode,
+      3);
+  EXPECT_FALSE(fs::exists(dir / "x.csv"));
+}
+
+}  // namespace
+}  // namespace spira::test
