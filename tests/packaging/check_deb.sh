@@ -9,7 +9,8 @@ trap 'rm -rf "$work"' EXIT
 cpack -G DEB --config "$build/CPackConfig.cmake" -B "$work/pkg" >"$work/cpack.log" 2>&1 || { cat "$work/cpack.log"; exit 1; }
 deb=$(ls "$work"/pkg/*.deb | head -1)
 [ -f "$deb" ] || { echo "no .deb produced"; exit 1; }
-dpkg-deb -I "$deb" | grep -q "Package: spira" || { echo "package metadata lacks 'Package: spira'"; exit 1; }
+info=$(dpkg-deb -I "$deb")  # captured first: grep -q closing the pipe early would fail it under pipefail
+grep -q "Package: spira" <<<"$info" || { echo "package metadata lacks 'Package: spira'"; exit 1; }
 dpkg-deb -x "$deb" "$work/root"
 need=(usr/bin/spira-cli usr/share/applications/spira.desktop usr/share/icons/hicolor/scalable/apps/spira.svg
       usr/share/spira/samples/dome.stl usr/share/spira/samples/open_cylinder.stl usr/share/metainfo/org.spira.Spira.metainfo.xml)
