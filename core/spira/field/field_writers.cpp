@@ -1,5 +1,7 @@
 #include "spira/field/field_writers.h"
 
+#include "spira/base/number_text.h"
+
 #include <charconv>
 #include <cmath>
 #include <cstdint>
@@ -7,6 +9,7 @@
 
 #include "spira/base/atomic_file.h"
 #include "spira/base/error.h"
+#include "spira/base/number_text.h"
 
 namespace spira {
 namespace {
@@ -17,20 +20,6 @@ void checkSizes(const TriangleMesh& mesh, const std::vector<double>& values)
     throw InputError("the field has " + std::to_string(values.size()) + " values but the mesh has " +
                          std::to_string(mesh.vertices.size()) + " vertices",
                      "write the field with the mesh it was computed on");
-}
-
-void appendNumber(std::string& out, double x)
-{
-  char buf[32];
-  const auto r = std::to_chars(buf, buf + sizeof buf, x);
-  out.append(buf, r.ptr);
-}
-
-void appendNumber(std::string& out, long long x)
-{
-  char buf[24];
-  const auto r = std::to_chars(buf, buf + sizeof buf, x);
-  out.append(buf, r.ptr);
 }
 
 std::string xmlEscaped(const std::string& s)

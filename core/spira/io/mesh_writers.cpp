@@ -9,6 +9,7 @@
 
 #include "spira/base/atomic_file.h"
 #include "spira/base/error.h"
+#include "spira/base/number_text.h"
 
 static_assert(__BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__, "binary mesh writers assume a little-endian host");
 
@@ -23,20 +24,6 @@ void checkIndices(const TriangleMesh& mesh)
       if (v < 0 || v >= n)
         throw InternalError("face " + std::to_string(f) + " refers to vertex " + std::to_string(v) + " of " +
                             std::to_string(n) + " while writing a mesh");
-}
-
-void appendNumber(std::string& out, double x)
-{
-  char buf[32];
-  const auto r = std::to_chars(buf, buf + sizeof buf, x);
-  out.append(buf, r.ptr);
-}
-
-void appendInt(std::string& out, long long x)
-{
-  char buf[24];
-  const auto r = std::to_chars(buf, buf + sizeof buf, x);
-  out.append(buf, r.ptr);
 }
 
 void appendVec(std::string& out, const Vec3& p)
@@ -125,7 +112,7 @@ std::string obj(const TriangleMesh& mesh, std::string_view name)
     out += 'f';
     for (int v : f) {
       out += ' ';
-      appendInt(out, v + 1);
+      appendNumber(out, static_cast<long long>(v) + 1);
     }
     out += '\n';
   }
@@ -165,7 +152,7 @@ std::string ply(const TriangleMesh& mesh, bool binary)
     out += '3';
     for (int v : f) {
       out += ' ';
-      appendInt(out, v);
+      appendNumber(out, static_cast<long long>(v));
     }
     out += '\n';
   }

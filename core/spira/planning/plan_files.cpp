@@ -1,33 +1,18 @@
 #include "spira/planning/plan_files.h"
 
-#include <charconv>
-
 #include <nlohmann/json.hpp>
 
 #include "spira/base/atomic_file.h"
+#include "spira/base/number_text.h"
 #include "spira/base/units.h"
 
 namespace spira {
 namespace {
 
-void put(std::string& out, double v)
-{
-  char buf[32];
-  const auto r = std::to_chars(buf, buf + sizeof buf, v);
-  out.append(buf, r.ptr);
-}
-
-void put(std::string& out, long long v)
-{
-  char buf[24];
-  const auto r = std::to_chars(buf, buf + sizeof buf, v);
-  out.append(buf, r.ptr);
-}
-
 void putVec(std::string& out, const Vec3& v)
 {
   for (int k = 0; k < 3; ++k) {
-    put(out, v[k]);
+    appendNumber(out, v[k]);
     out += ',';
   }
 }
@@ -42,21 +27,21 @@ std::string trajectoryCsv(const Trajectory& trajectory)
   out.reserve(out.size() + trajectory.size() * 220);
   for (size_t i = 0; i < trajectory.size(); ++i) {
     const TrajectoryPoint& p = trajectory.points[i];
-    put(out, static_cast<long long>(i));
+    appendNumber(out, static_cast<long long>(i));
     out += ',';
     putVec(out, p.position);
     putVec(out, p.normal);
     putVec(out, p.tangent);
     putVec(out, p.build);
-    put(out, static_cast<long long>(p.revolution));
+    appendNumber(out, static_cast<long long>(p.revolution));
     out += ',';
-    put(out, static_cast<long long>(p.generatrix));
+    appendNumber(out, static_cast<long long>(p.generatrix));
     out += ',';
-    put(out, p.height);
+    appendNumber(out, p.height);
     out += ',';
-    put(out, p.travelSpeed);
+    appendNumber(out, p.travelSpeed);
     out += ',';
-    put(out, p.wireFeed * kMmPerSecondToMetresPerMinute);
+    appendNumber(out, p.wireFeed * kMmPerSecondToMetresPerMinute);
     out += p.arcOn ? ",1\n" : ",0\n";
   }
   return out;
