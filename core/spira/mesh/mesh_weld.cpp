@@ -66,24 +66,6 @@ size_t nextPow2(size_t n)
   return p;
 }
 
-BoundingBox finiteBounds(const Vec3* p, size_t n)
-{
-  return tbb::parallel_reduce(
-      tbb::blocked_range<size_t>(0, n, kGrain), BoundingBox(),
-      [&](const tbb::blocked_range<size_t>& r, BoundingBox box) {
-        for (size_t i = r.begin(); i != r.end(); ++i)
-          if (p[i].allFinite()) box.extend(p[i]);
-        return box;
-      },
-      [](BoundingBox a, const BoundingBox& b) {
-        if (!b.empty()) {
-          a.extend(b.min);
-          a.extend(b.max);
-        }
-        return a;
-      });
-}
-
 // Coordinates as a plain struct, so partition buffers need no construction.
 struct Xyz {
   double x, y, z;

@@ -17,14 +17,13 @@ constexpr size_t kParallelGrain = 1 << 15;
 
 }  // namespace
 
-BoundingBox TriangleMesh::bounds() const
+BoundingBox finiteBounds(const Vec3* points, size_t count)
 {
-  // Non-finite vertices are skipped: one NaN would otherwise poison the whole box.
   return tbb::parallel_reduce(
-      tbb::blocked_range<size_t>(0, vertices.size(), kParallelGrain), BoundingBox(),
+      tbb::blocked_range<size_t>(0, count, kParallelGrain), BoundingBox(),
       [&](const tbb::blocked_range<size_t>& r, BoundingBox box) {
         for (size_t i = r.begin(); i != r.end(); ++i)
-          if (vertices[i].allFinite()) box.extend(vertices[i]);
+          if (points[i].allFinite()) box.extend(points[i]);
         return box;
       },
       [](BoundingBox a, const BoundingBox& b) {
@@ -34,6 +33,12 @@ BoundingBox TriangleMesh::bounds() const
         }
         return a;
       });
+}
+
+BoundingBox TriangleMesh::bounds() const
+{
+  // Non-finite vertices are skipped: one NaN would otherwise poison the whole box.
+  return finiteBounds(vertices.data(), vertices.size());
 }
 
 Vec3 TriangleMesh::faceNormalScaled(size_t f) const

@@ -25,6 +25,9 @@ struct BoundingBox {
   double diagonal() const { return size().norm(); }
 };
 
+// Bounding box of the finite points among points[0..count) (NaN or infinite ones are skipped).
+BoundingBox finiteBounds(const Vec3* points, size_t count);
+
 using Face = std::array<int, 3>;
 
 // An indexed triangle mesh in millimetres. Faces are counter-clockwise seen from outside
