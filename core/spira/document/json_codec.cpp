@@ -65,7 +65,7 @@ nlohmann::json::binary_t doublesToBlob(const std::vector<double>& v)
   return nlohmann::json::binary_t(std::move(out));
 }
 
-std::vector<double> blobToDoubles(const nlohmann::json& j, const std::string& what)
+std::vector<double> decodeDoubleBlob(const nlohmann::json& j, const std::string& what)
 {
   const auto& b = blob(j, what, 8);
   std::vector<double> v(b.size() / 8);

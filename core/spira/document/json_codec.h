@@ -15,7 +15,7 @@ namespace spira::codec {
 // so files move between machines; reading checks sizes and throws InputError naming `what`.
 
 nlohmann::json::binary_t doublesToBlob(const std::vector<double>& v);
-std::vector<double> blobToDoubles(const nlohmann::json& j, const std::string& what);
+std::vector<double> decodeDoubleBlob(const nlohmann::json& j, const std::string& what);
 nlohmann::json::binary_t intsToBlob(const std::vector<std::int32_t>& v);
 std::vector<std::int32_t> blobToInts(const nlohmann::json& j, const std::string& what);
 

@@ -73,7 +73,7 @@ Trajectory trajectoryFromJson(const nlohmann::json& j, const std::string& what)
     return sized(codec::blobToInts(codec::field(j, key, what), what + " " + key), n, what);
   };
   auto doubles = [&](const char* key) {
-    return sized(codec::blobToDoubles(codec::field(j, key, what), what + " " + key), n, what);
+    return sized(codec::decodeDoubleBlob(codec::field(j, key, what), what + " " + key), n, what);
   };
   const auto position = vec3s("position"), normal = vec3s("normal"), tangent = vec3s("tangent"),
              build = vec3s("build");
@@ -102,7 +102,7 @@ Trajectory trajectoryFromJson(const nlohmann::json& j, const std::string& what)
     throw InputError(what + ": 'extra' is not an object", "the project file is damaged");
   for (auto it = extra.begin(); it != extra.end(); ++it)
     t.extra[it.key()] =
-        sized(codec::blobToDoubles(it.value(), what + " " + it.key()), n, what + " " + it.key());
+        sized(codec::decodeDoubleBlob(it.value(), what + " " + it.key()), n, what + " " + it.key());
   return t;
 }
 
@@ -178,7 +178,7 @@ Results resultsFromJson(const nlohmann::json& j)
     FieldResult fr;
     fr.kind = codec::stringField(*f, "kind", what + " field");
     fr.source = codec::stringField(*f, "source", what + " field");
-    fr.values = codec::blobToDoubles(codec::field(*f, "values", what + " field"), what + " field values");
+    fr.values = codec::decodeDoubleBlob(codec::field(*f, "values", what + " field"), what + " field values");
     r.field = std::make_shared<const FieldResult>(std::move(fr));
   }
   if (const auto* g = member("generatrices"))
