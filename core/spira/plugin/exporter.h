@@ -6,12 +6,11 @@
 #include <vector>
 
 #include "spira/base/progress.h"
+#include "spira/path/joint_trajectory.h"
 #include "spira/path/trajectory.h"
 #include "spira/plugin/plugin.h"
 
 namespace spira {
-
-struct JointTrajectory;  // defined with the kinematics
 
 // What an exporter writes from: the plan's channels (never recomputed) and a few names for the
 // header comment block.
