@@ -48,10 +48,15 @@ TEST(SpiralClosed, HemisphereConvergesToThePoleOnce)
   size_t atPole = 0;
   for (const auto& p : t.points) atPole += (p.position - pole).norm() < 1e-6;
   EXPECT_EQ(atPole, 1u);
-  // The final jump is one step of the last termination ramp (h_min at the last generatrix).
+  // The final jump is one step of the last termination ramp: h_min at the last generatrix,
+  // stretched by 1 / cos(theta) where the layers lean on the meridians near the pole.
   const double lastJump = (t.points.back().position - t.points[t.size() - 2].position).norm();
-  EXPECT_LT(lastJump, 0.9 + 1e-6);
+  EXPECT_LT(lastJump, 0.9 * 1.001);
   EXPECT_GT(lastJump, 0.85);
+  // The gap to the pole is measured along generatrix 0, where the last ramp lays h_max.
+  EXPECT_NEAR(r.report.closureGap, 1.1, 1.1 * 0.001);
+  // Every point, ramps and closure point included, lies in the window.
+  EXPECT_TRUE(r.report.violations.empty());
 
   // On the sphere (chordal error of a 199-segment meridian: 4e-4 mm), climbing every generatrix.
   for (size_t q = 0; q < t.size(); ++q) {
@@ -84,18 +89,18 @@ TEST(SpiralClosed, HeightsRecomputedFromPositionsAgree)
   const SpiralResult r = buildSpiral(g, domeSettings(), progress);
   const Trajectory& t = r.trajectory;
   const auto lat = [](const Vec3& p) { return std::asin(std::min(1.0, p.z() / p.norm())); };
-  for (size_t q = 0; q < t.size(); ++q) {
+  // The closure point takes the height of the last ring (its gap is covered by that bead's width).
+  EXPECT_EQ(t.points.back().height, t.points[t.size() - 2].height);
+  for (size_t q = 0; q + 1 < t.size(); ++q) {
     const TrajectoryPoint& p = t.points[q];
-    const size_t prev = q + 1 == t.size() ? (p.revolution - 1) * kN : q - kN;
+    const size_t prev = q - kN;
     const Vec3 below = q < static_cast<size_t>(kN) ? g.lines[p.generatrix].front() : t.points[prev].position;
     const Vec3 v = p.position - below;
     const double d = kR * (lat(p.position) - lat(below));
     EXPECT_NEAR(p.height, d * v.dot(p.build) / v.norm(), 2e-5 * d) << q;
     // b points up the meridian, toward the pole.
     const Vec3 towardPole = (Vec3(0, 0, kR) - p.position).normalized();
-    if (q + 1 < t.size()) {
-      EXPECT_GT(p.build.dot(towardPole), 0.0) << q;
-    }
+    EXPECT_GT(p.build.dot(towardPole), 0.0) << q;
   }
 }
 
@@ -125,11 +130,12 @@ TEST(SpiralClosed, MinimumRevolutionLengthFoldsTinyRevolutions)
   EXPECT_LT(perimeter, 20.0);
 }
 
-// With the figures' start-up the seam rises d - 0.9 h in one segment whatever the radius; in
-// centred mode (d about h) that is 0.1 mm, and near the pole, where neighbouring generatrices are
-// a fraction of a millimetre apart, the seam points' true height d cos(theta) falls far below h_min.
-// The default uniform helix spreads the rise over the revolution and stays feasible.
-TEST(SpiralClosed, NominalTransitionFailsNearThePoleWhereTheUniformHelixDoesNot)
+// With the figures' start-up the seam rises d - 0.9 h in one segment whatever the radius: 0.1 mm
+// in centred mode (d about h), which near the pole, where neighbouring generatrices are a fraction
+// of a millimetre apart, is a steep step for the torch. The default uniform helix spreads the rise
+// over the revolution: its seam rises d / n like every other point. Both keep every deposit in the
+// window (the seam frames follow the revolution, spiral_frames.h).
+TEST(SpiralClosed, UniformHelixSpreadsTheSeamRiseThatTheNominalTransitionConcentrates)
 {
   NullProgress progress;
   const Generatrices g = test::hemisphereMeridians(kR, kN, kPoints);
@@ -137,16 +143,13 @@ TEST(SpiralClosed, NominalTransitionFailsNearThePoleWhereTheUniformHelixDoesNot)
   s.layerMode = LayerMode::Centered;
   const SpiralResult helix = buildSpiral(g, s, progress);
   EXPECT_TRUE(helix.report.feasible);
-  EXPECT_NEAR(helix.report.seamStep, helix.report.stepMin / kN, 1e-6);
+  // Stretched termination ramps (1 / cos(theta) up to ~1.0004 near the pole) move the seam by
+  // ~2e-5 mm from the ideal d / n.
+  EXPECT_NEAR(helix.report.seamStep, helix.report.stepMin / kN, 1e-4);
 
   s.startupTransition = StartupTransition::ToNominal;
   const SpiralResult nominal = buildSpiral(g, s, progress);
-  EXPECT_FALSE(nominal.report.feasible);
-  EXPECT_GE(nominal.report.modulatedViolations, 5u);
-  for (const HeightViolation& v : nominal.report.violations) {
-    if (v.phase != SpiralPhase::Modulated) continue;
-    EXPECT_EQ(v.generatrix, kN - 1);  // seam points only
-    EXPECT_FALSE(v.aboveWindow);
-    EXPECT_LT(nominal.trajectory.points[v.point].position.head<2>().norm(), 15.0);  // near the pole
-  }
+  EXPECT_TRUE(nominal.report.feasible);
+  EXPECT_NEAR(nominal.report.seamStep, nominal.report.stepMin - 0.9, 1e-3);
+  EXPECT_GT(nominal.report.seamStep, 20.0 * helix.report.seamStep);
 }

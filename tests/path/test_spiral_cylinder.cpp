@@ -215,7 +215,10 @@ TEST(SpiralCylinder, HeightChannelMatchesTheAnalyticTrueHeight)
   const size_t count = r.trajectory.size();
   for (size_t q = 0; q < count; ++q) {
     const double step = z[q] - (q >= static_cast<size_t>(kN) ? z[q - kN] : 0.0);
-    const size_t from = q + 1 < count ? q : q - 1;  // the last point keeps the tangent before it
+    // The last point of a revolution (the seam) and the last point of the path take the chord
+    // arriving at them; every other point the chord to the next point.
+    const bool seam = q % kN == static_cast<size_t>(kN - 1);
+    const size_t from = q + 1 < count && !seam ? q : q - 1;
     EXPECT_NEAR(r.trajectory.points[q].height, analyticHeight(step, z[from + 1] - z[from]), 1e-9) << q;
   }
 }
@@ -239,16 +242,17 @@ TEST(SpiralCylinder, NominalTransitionLeavesTheSeamStepToTheLayerStep)
       ASSERT_NEAR(r.trajectory.points[q].position.z(), z[q], 1e-9);
     const double d = modulated / nLayers;
     EXPECT_NEAR(r.report.seamStep, d - 0.9, 1e-9);
-    // A seam point of the modulated phase, and a point inside a revolution.
-    EXPECT_NEAR(r.trajectory.points[8 * kN - 1].height, analyticHeight(d, d - 0.9), 1e-9);
+    // A seam point of the modulated phase and a point inside a revolution: both lean with the
+    // revolution's climb, 0.9 mm over kN - 1 segments; the seam's own rise is reported apart.
+    EXPECT_NEAR(r.trajectory.points[8 * kN - 1].height, analyticHeight(d, 0.9 / (kN - 1)), 1e-9);
     EXPECT_NEAR(r.trajectory.points[8 * kN - 2].height, analyticHeight(d, 0.9 / (kN - 1)), 1e-9);
+    EXPECT_NEAR(z[8 * kN] - z[8 * kN - 1], d - 0.9, 1e-9);
     EXPECT_TRUE(r.report.feasible);
   }
 }
 
 // The thesis as written: figures' start-up, no termination, d_i = l_i / n_layer absorbs the
-// start-up climb. The top is still reached, but the seam step grows to about d and the late seam
-// points' true heights drop out of the window.
+// start-up climb. The top is still reached, but the seam rise grows to about d, in one segment.
 TEST(SpiralCylinder, AbsorbTerminationReachesTheTopWithAGrowingSeamStep)
 {
   NullProgress progress;
@@ -267,20 +271,15 @@ TEST(SpiralCylinder, AbsorbTerminationReachesTheTopWithAGrowingSeamStep)
     const double d = (kH - acc) / nLayers;
     for (int m = 1; m <= nLayers; ++m) z[(5 + m) * kN + i] = acc + m * d;
   }
-  size_t lowSeams = 0;
-  for (size_t q = 0; q < r.trajectory.size(); ++q) {
+  for (size_t q = 0; q < r.trajectory.size(); ++q)
     ASSERT_NEAR(r.trajectory.points[q].position.z(), z[q], 1e-9) << q;
-    const bool modulated = q >= 6u * kN;
-    if (modulated && q + 1 < r.trajectory.size() && r.trajectory.points[q].generatrix == kN - 1 &&
-        analyticHeight(z[q] - z[q - kN], z[q + 1] - z[q]) < 0.9 - 0.005)
-      ++lowSeams;
-  }
-  // The seam rise grows from about 0 to about d over the build.
+  // The seam rise grows from about 0 to about d over the build, one segment each time; the seam
+  // points' deposits are their steps (in the window), the rise is reported apart.
   EXPECT_NEAR(z[6 * kN] - z[6 * kN - 1], 0.0, 0.01);
   EXPECT_NEAR(z[z.size() - kN] - z[z.size() - kN - 1], 0.9, 0.01);
+  EXPECT_NEAR(r.report.seamRiseMax, z[z.size() - kN] - z[z.size() - kN - 1], 1e-3);
   EXPECT_NEAR(r.trajectory.points.back().position.z(), kH, 1e-9);
-  EXPECT_GT(lowSeams, static_cast<size_t>(nLayers / 2));
-  EXPECT_EQ(r.report.modulatedViolations, lowSeams);
-  for (const HeightViolation& v : r.report.violations) EXPECT_EQ(v.generatrix, kN - 1);
+  EXPECT_TRUE(r.report.violations.empty());
+  EXPECT_TRUE(r.report.feasible);
   expectOnePolyline(r.trajectory, z);
 }

@@ -18,6 +18,9 @@ using namespace spira;
 // left for the modulated phase once the start-up and termination ramps are laid, so this part's
 // generatrices are 152..178 mm plus the ramps (which take the same length on every generatrix).
 // The Eq. 3.6 pre-check on raw lengths 152..178 also gives 84 (LayerCount.ThesisTable33Criterion).
+// The upper edge leans (up to 13/60 rad), so the termination ramps are stretched by 1 / cos(theta)
+// (up to 2.4 %) to keep their true heights; that takes up to 0.3 mm more of the long generatrices
+// than the unstretched ramps this part was sized for, hence the 0.3 mm / 0.004 mm tolerances.
 // Lengths vary smoothly: l(phi) = 165 - 13 cos(phi), shortest at phi = 0, longest at phi = pi.
 TEST(SpiralOpenPart, ThesisTable33Arithmetic)
 {
@@ -37,23 +40,23 @@ TEST(SpiralOpenPart, ThesisTable33Arithmetic)
 
   EXPECT_EQ(rep.nLayers, 84);
   EXPECT_EQ(rep.nRevolutions, 6 + 84 + 6);
-  EXPECT_NEAR(rep.modulatedLengthMin, 152.0, 1e-9);
-  EXPECT_NEAR(rep.modulatedLengthMax, 178.0, 1e-9);
-  EXPECT_NEAR(rep.stepMin, 152.0 / 84.0, 1e-9);  // 1.8095
-  EXPECT_NEAR(rep.stepMax, 178.0 / 84.0, 1e-9);  // 2.1190
+  EXPECT_NEAR(rep.modulatedLengthMin, 152.0, 0.3);
+  EXPECT_NEAR(rep.modulatedLengthMax, 178.0, 0.3);
+  EXPECT_NEAR(rep.stepMin, rep.modulatedLengthMin / 84.0, 1e-12);  // 1.8095
+  EXPECT_NEAR(rep.stepMax, rep.modulatedLengthMax / 84.0, 1e-12);  // 2.1190
   EXPECT_NEAR(rep.stepMin, 1.81, 0.005);
   EXPECT_NEAR(rep.stepMax, 2.12, 0.005);
-  EXPECT_NEAR(rep.lengthCriterion.stepSpread, 26.0 / 84.0, 1e-9);
+  EXPECT_NEAR(rep.lengthCriterion.stepSpread, 26.0 / 84.0, 0.004);
   EXPECT_TRUE(rep.lengthCriterion.ok);
   EXPECT_TRUE(rep.feasible);
-  EXPECT_EQ(rep.modulatedViolations, 0u);
+  EXPECT_TRUE(rep.violations.empty());  // ramps included
 
   // Each modulated step equals l_i / 84 exactly; true heights lie in [1.8, 2.12] (Fig. 3.41b: 1.8-2.1).
   const size_t nn = n;
   for (size_t q = 6 * nn; q < (6 + 84) * nn; ++q) {
     const TrajectoryPoint& p = r.trajectory.points[q];
     const double step = p.position.z() - r.trajectory.points[q - nn].position.z();
-    ASSERT_NEAR(step, modulated(p.generatrix) / 84.0, 1e-9) << q;
+    ASSERT_NEAR(step, modulated(p.generatrix) / 84.0, 0.004) << q;
     EXPECT_LE(p.height, step + 1e-12);
     EXPECT_GT(p.height, 1.8);
     EXPECT_LT(p.height, 2.12);

@@ -56,7 +56,7 @@ void checkFeasibility(const Trajectory& path, double h, double hMin, double hMax
   report.heightMin = modulated ? lo : 0.0;
   report.heightMax = modulated ? hi : 0.0;
   report.heightMean = modulated ? sum / modulated : 0.0;
-  report.feasible = report.lengthCriterion.ok && report.modulatedViolations == 0;
+  report.feasible = report.lengthCriterion.ok && report.violations.empty();
 }
 
 }  // namespace spira

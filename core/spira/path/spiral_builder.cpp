@@ -22,6 +22,17 @@ struct Layout {
   std::vector<double> s;
 };
 
+// Ramp steps are nominal deposits, but the true height is the step times cos(theta), theta the
+// angle between the generatrix and the build direction. Where the layers lean on the generatrices
+// (a non-planar upper edge, a converging dome) a ramp step of h_min would lay less than h_min. A
+// first pass measures 1 / cos(theta) on each generatrix over the start-up and over the termination;
+// the second pass stretches that generatrix's ramp steps by it, so the true heights are the nominal
+// ones. The modulated phase needs no such care: its steps come out of the layer count.
+struct RampScales {
+  std::vector<double> start, end;
+  explicit RampScales(int n) : start(n, 1.0), end(n, 1.0) {}
+};
+
 void throwTooShort(size_t i, double length, double ramps, double hMin)
 {
   std::ostringstream m;
@@ -36,21 +47,22 @@ void throwTooShort(size_t i, double length, double ramps, double hMin)
 // which depends on the layer count, which depends on the length the ramps take. For a given count
 // c solves c n_layer = (l_0(c) + l_{n-1}(c)) / 2, monotone in c (bisection over the window); the
 // count is then recomputed, until both agree (a few rounds at most).
-Layout layOut(const std::vector<double>& lengths, const SpiralSettings& s, StartupProfile& prof,
-              SpiralReport& report)
+// `scale` stretches the ramp steps of each generatrix (see RampScales).
+Layout layOut(const std::vector<double>& lengths, const SpiralSettings& s, const RampScales& scale,
+              StartupProfile& prof, SpiralReport& report)
 {
   const int n = static_cast<int>(lengths.size());
   const bool ramps = s.termination == Termination::Ramps;
   std::vector<double> startLen(n), modLen(n);
   const auto rampLength = [&](const StartupProfile& p, int i) {
     const double u = static_cast<double>(i) / (n - 1);
-    return p.startLength(u) + (ramps ? p.endLength(u) : 0.0);
+    return p.startLength(u) * scale.start[i] + (ramps ? p.endLength(u) * scale.end[i] : 0.0);
   };
   // Lays the ramps for seam step c (0: h); returns the layer count they leave room for.
   const auto measure = [&](double c) {
     prof = StartupProfile(s.h, s.hMin, s.hMax, s.startupTransition, n, c);
     for (int i = 0; i < n; ++i) {
-      startLen[i] = prof.startLength(static_cast<double>(i) / (n - 1));
+      startLen[i] = prof.startLength(static_cast<double>(i) / (n - 1)) * scale.start[i];
       modLen[i] = lengths[i] - rampLength(prof, i);
       if (modLen[i] < s.hMin * (1.0 - 1e-9)) throwTooShort(i, lengths[i], lengths[i] - modLen[i], s.hMin);
     }
@@ -108,9 +120,11 @@ Layout layOut(const std::vector<double>& lengths, const SpiralSettings& s, Start
     const double d = modLen[i] / nLayers;
     int k = 0;
     double acc = 0.0;
-    for (int r = 0; r < report.nStartupRevolutions; ++r, ++k) lay.s[k * n + i] = acc += prof.startStep(r, u);
+    for (int r = 0; r < report.nStartupRevolutions; ++r, ++k)
+      lay.s[k * n + i] = acc += prof.startStep(r, u) * scale.start[i];
     for (int m = 1; m <= nLayers; ++m, ++k) lay.s[k * n + i] = acc = startLen[i] + m * d;
-    for (int r = 0; r < report.nEndRevolutions; ++r, ++k) lay.s[k * n + i] = acc += prof.endStep(r, u);
+    for (int r = 0; r < report.nEndRevolutions; ++r, ++k)
+      lay.s[k * n + i] = acc += prof.endStep(r, u) * scale.end[i];
     lay.s[(lay.revolutions - 1) * n + i] = lengths[i];  // exactly on the edge, whatever the rounding
   }
   return lay;
@@ -130,30 +144,17 @@ int trailingDegenerate(const Trajectory& path, int n, int revolutions, double mi
   return collapsed;
 }
 
-}  // namespace
-
-SpiralResult buildSpiral(const Generatrices& generatrices, const SpiralSettings& settings, Progress& progress)
+// One layout and sampling of the spiral with the given ramp scales.
+SpiralResult buildPass(const Generatrices& g, const std::vector<ArcLengthPolyline>& arcs,
+                       const std::vector<double>& lengths, const SpiralSettings& settings,
+                       const RampScales& scales, std::vector<double>& cosines, Progress& progress)
 {
-  StartupProfile prof(settings.h, settings.hMin, settings.hMax);  // window errors before geometry errors
-  validateSpiralSettings(settings);
-  progress.report(0.0, "spiral");
-  const PreparedGeneratrices prep = prepareGeneratrices(generatrices, settings);
-  const Generatrices& g = prep.generatrices();
   const int n = static_cast<int>(g.lines.size());
-
-  std::vector<ArcLengthPolyline> arcs;
-  arcs.reserve(n);
-  std::vector<double> lengths(n);
-  for (int i = 0; i < n; ++i) {
-    arcs.emplace_back(g.lines[i], g.normals[i]);
-    lengths[i] = arcs[i].length();
-  }
-
+  StartupProfile prof(settings.h, settings.hMin, settings.hMax);
   SpiralResult result;
   SpiralReport& report = result.report;
-  report.normalsEstimated = prep.normalsEstimated();
   report.pointsPerRevolution = n;
-  const Layout lay = layOut(lengths, settings, prof, report);
+  const Layout lay = layOut(lengths, settings, scales, prof, report);
   const int revs = lay.revolutions;
 
   // Generatrix by generatrix, so each polyline is swept once while it is in cache; points are
@@ -212,12 +213,74 @@ SpiralResult buildSpiral(const Generatrices& generatrices, const SpiralSettings&
   computeFrames(path);
   report.normalsFlipped = orientBuildDirection(path, steps);
   computeDepositHeights(path, steps, arcSteps);
+  cosines.assign(count, 1.0);
+  for (size_t q = 0; q < count; ++q)
+    if (arcSteps[q] > 0.0) cosines[q] = path.points[q].height / arcSteps[q];
+  if (closure) {
+    report.closureGap = arcSteps.back();
+    path.points.back().height = path.points[count - 2].height;
+  }
   checkFeasibility(path, settings.h, settings.hMin, settings.hMax, settings.heightTolerance, closure, report);
 
   report.nPoints = count;
   report.pathLength = path.length();
-  for (size_t q = 1; q < count; ++q)
-    report.maxJump = std::max(report.maxJump, (path.points[q].position - path.points[q - 1].position).norm());
+  for (size_t q = 1; q < count; ++q) {
+    const TrajectoryPoint& a = path.points[q - 1];
+    const TrajectoryPoint& b = path.points[q];
+    report.maxJump = std::max(report.maxJump, (b.position - a.position).norm());
+    if (a.revolution != b.revolution)
+      report.seamRiseMax = std::max(report.seamRiseMax, (b.position - a.position).dot(a.build));
+  }
+  return result;
+}
+
+// Fills `scales` with 1 / cos(theta) per generatrix over the start-up and over the termination of
+// `pass` (the largest, so that every ramp point reaches its nominal height). Returns whether any
+// generatrix needs stretching by more than kStretchFloor: below it the heights are within 0.01 % of
+// nominal, far inside any tolerance, and the layout is left exactly as designed.
+bool stretchRamps(const SpiralResult& pass, const std::vector<double>& cosines, RampScales& scales)
+{
+  constexpr double kStretchFloor = 1e-4;
+  bool any = false;
+  const auto& pts = pass.trajectory.points;
+  const size_t last = pass.report.collapsedRevolutions > 0 ? pts.size() - 1 : pts.size();
+  for (size_t q = 0; q < last; ++q) {
+    const SpiralPhase phase = phaseOfRevolution(pts[q].revolution, pass.report);
+    if (phase == SpiralPhase::Modulated || cosines[q] <= 0.0) continue;
+    const double stretch = 1.0 / cosines[q];
+    if (stretch <= 1.0 + kStretchFloor) continue;
+    auto& target = phase == SpiralPhase::StartUp ? scales.start : scales.end;
+    target[pts[q].generatrix] = std::max(target[pts[q].generatrix], stretch);
+    any = true;
+  }
+  return any;
+}
+
+}  // namespace
+
+SpiralResult buildSpiral(const Generatrices& generatrices, const SpiralSettings& settings, Progress& progress)
+{
+  StartupProfile prof(settings.h, settings.hMin, settings.hMax);  // window errors before geometry errors
+  validateSpiralSettings(settings);
+  progress.report(0.0, "spiral");
+  const PreparedGeneratrices prep = prepareGeneratrices(generatrices, settings);
+  const Generatrices& g = prep.generatrices();
+  const int n = static_cast<int>(g.lines.size());
+
+  std::vector<ArcLengthPolyline> arcs;
+  arcs.reserve(n);
+  std::vector<double> lengths(n);
+  for (int i = 0; i < n; ++i) {
+    arcs.emplace_back(g.lines[i], g.normals[i]);
+    lengths[i] = arcs[i].length();
+  }
+
+  RampScales scales(n);
+  std::vector<double> cosines;
+  SpiralResult result = buildPass(g, arcs, lengths, settings, scales, cosines, progress);
+  if (stretchRamps(result, cosines, scales))
+    result = buildPass(g, arcs, lengths, settings, scales, cosines, progress);
+  result.report.normalsEstimated = prep.normalsEstimated();
   progress.report(1.0, "spiral");
   return result;
 }

@@ -28,7 +28,10 @@ namespace spira {
 // SpiralSettings::minRevolutionLength (the last one at least, which is the closure point repeated
 // n times) are replaced by that single point.
 // Each point gets its frame (spiral_frames.h), its true deposit height h = d cos(theta) and the
-// revolution and generatrix it belongs to; the report checks feasibility (Eq. 3.6 and 3.15).
+// revolution and generatrix it belongs to; the report checks feasibility (Eq. 3.6 and 3.15) on
+// every point. Where the layers lean on the generatrices (cos(theta) < 1 - 1e-4 over a ramp) the
+// spiral is laid out twice: the second pass stretches that generatrix's ramp steps by 1 / cos(theta)
+// so that the ramps' true heights stay nominal, inside the window.
 //
 // Throws InputError for unusable input (see StartupProfile, spiral_input.h) and for generatrices
 // too short to hold the start-up, the termination and one layer of h_min. An infeasible window is

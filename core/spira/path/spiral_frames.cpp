@@ -26,7 +26,13 @@ void computeFrames(Trajectory& path)
   const Vec3 fallback = firstValid < count ? chord[firstValid] : pts[0].normal.unitOrthogonal();
   Vec3 last = fallback;
   for (size_t q = 0; q < count; ++q) {
-    if (valid[q]) last = chord[q];
+    const bool seam = q > 0 && q + 1 < count && pts[q + 1].revolution != pts[q].revolution &&
+                      pts[q - 1].revolution == pts[q].revolution && valid[q - 1];
+    if (seam) {
+      last = chord[q - 1];
+    } else if (valid[q]) {
+      last = chord[q];
+    }
     const Vec3& n = pts[q].normal;
     Vec3 t = last - last.dot(n) * n;
     // A chord along the normal has no tangent-plane part: keep the chord itself.

@@ -12,6 +12,12 @@ namespace spira {
 // orthonormal, right-handed frame the torch can use directly. The last point, and points that
 // coincide with the next one, take the tangent of the nearest point before them (after them at the
 // very start).
+// The seam is the exception: the last point of a revolution takes the chord that arrives at it,
+// not the one that climbs to the next revolution. The seam chord climbs the whole revolution's rise
+// (up to h_min where the spiral levels out onto a flat edge) in one segment; taking its direction
+// would tilt b, and the torch, by up to 45 degrees for that one point and report a deposit thinner
+// than the one laid (the steps below and above the seam both lie in the window). The seam rise is
+// reported separately (SpiralReport::seamRiseMax).
 void computeFrames(Trajectory& path);
 
 // steps[q] is the generatrix step vector of point q: from the point of the same generatrix on the

@@ -50,19 +50,26 @@ struct SpiralReport {
   double heightMin = 0.0, heightMax = 0.0, heightMean = 0.0;
   double pathLength = 0.0;  // mm
   double maxJump = 0.0;     // longest segment between consecutive points, mm
+  // Largest rise along b over a seam segment (last point of a revolution to the first of the next),
+  // mm: the start-up's first seams and the termination's last ones climb up to about h_min there.
+  double seamRiseMax = 0.0;
 
   LengthCriterion lengthCriterion;        // Eq. 3.6 on L with the n_layer used
   LengthCriterion thesisLengthCriterion;  // Eq. 3.6 as printed: on G with n = floor(min G / h_min)
 
-  // Eq. 3.15 (corrected: h_min <= h <= h_max) with the tolerance below. Feasible means Eq. 3.6
-  // holds and no point of the modulated phase violates Eq. 3.15 (the thesis checks H_depot, which
-  // spans the n_layer modulated revolutions). Ramp revolutions use nominal steps inside the window
-  // by construction; where they climb steeply at the seam their points may dip below h_min and are
-  // listed with their phase, but do not make the plan infeasible.
+  // Eq. 3.15 (corrected: h_min <= h <= h_max) with the tolerance below, on EVERY point: start-up,
+  // modulated phase, termination and closure point. Feasible means Eq. 3.6 holds and no point
+  // violates Eq. 3.15. (The thesis checks H_depot, the modulated phase only; its count is kept in
+  // modulatedViolations.) Ramp revolutions use nominal steps inside the window by construction, and
+  // the seam frames (computeFrames) keep their true heights there.
   bool feasible = false;
   double heightTolerance = 0.0;  // mm
   std::vector<HeightViolation> violations;
   size_t modulatedViolations = 0;
+  // Closed parts: arc length along generatrix 0 from the last kept revolution to the closure point,
+  // mm. The bead laid on that last ring (at least pi x bead width long) covers it sideways, so the
+  // closure point takes the last ring's deposit height rather than this length.
+  double closureGap = 0.0;
 
   bool normalsEstimated = false;  // the generatrices came without normals
   bool normalsFlipped = false;    // normals were reversed so that b = n x t points up the generatrices

@@ -73,7 +73,9 @@ nlohmann::json planReportJson(const PlanOutput& plan, const std::string& strateg
       {"length_min", s.lengthCriterion.lengthMin}, {"length_max", s.lengthCriterion.lengthMax},
       {"n_layers", s.lengthCriterion.nLayers},     {"step_spread", s.lengthCriterion.stepSpread},
       {"window", s.lengthCriterion.window},        {"ok", s.lengthCriterion.ok}};
-  j["violations"] = s.modulatedViolations;
+  j["violations"] = s.violations.size();
+  j["modulated_violations"] = s.modulatedViolations;
+  j["closure_gap"] = s.closureGap;
   nlohmann::json points = nlohmann::json::array();
   for (const auto& v : s.violations) {
     if (points.size() >= 1000) break;
@@ -92,6 +94,7 @@ nlohmann::json planReportJson(const PlanOutput& plan, const std::string& strateg
   if (plan.hasClosure) j["closure_distance"] = plan.closure.distance;
   j["path_length"] = s.pathLength;
   j["max_jump"] = s.maxJump;
+  j["seam_rise_max"] = s.seamRiseMax;
   j["build_time_s"] = plan.process.buildTime;
   j["process"] = {{"within_limits", plan.process.withinLimits},
                   {"ts_min_mm_s", plan.process.travelSpeedMin},

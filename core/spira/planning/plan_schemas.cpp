@@ -57,6 +57,17 @@ const ParamSchema& spiralSchema()
           "ramps: mirrored ramps level the last revolution onto the upper edge or closure point; absorb: the "
           "thesis as written, the start-up climb is spread over the whole build.",
           "Spiral"),
+      choice(
+          "startup_transition", "uniform-helix", {"uniform-helix", "to-nominal"}, "Start-up transition",
+          "uniform-helix: the start-up climbs what one revolution of the modulated phase climbs, so the seam "
+          "is an ordinary step (the thesis's text); to-nominal: the transition ramp ends at h as the "
+          "thesis's figures show, leaving a seam step of up to half the window.",
+          "Spiral"),
+      num("closure_ring", 0.0, 0.0, 1000.0, "mm", "Smallest closing ring",
+          "Closed parts: the last revolutions around the closure point shorter than this are replaced by the "
+          "closure point. 0 = pi x bead width, the smallest ring a bead of that width lays without covering "
+          "itself.",
+          "Spiral"),
       num("height_tolerance", 0.5, 0.0, 10.0, "%", "Window tolerance",
           "Heights within this fraction of h outside [h_min, h_max] still count as inside (Eq. 3.15).",
           "Spiral"),
@@ -126,6 +137,9 @@ SpiralSettings spiralSettingsFrom(const ParamSet& given)
   s.layerMode = v.getString("layer_mode") == "floor" ? LayerMode::Floor : LayerMode::Centered;
   s.termination = v.getString("termination") == "absorb" ? Termination::Absorb : Termination::Ramps;
   s.heightTolerance = v.internal(schema, "height_tolerance");
+  s.startupTransition = v.getString("startup_transition") == "to-nominal" ? StartupTransition::ToNominal
+                                                                          : StartupTransition::UniformHelix;
+  s.minRevolutionLength = v.getDouble("closure_ring");
   return s;
 }
 

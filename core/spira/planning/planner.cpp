@@ -3,6 +3,7 @@
 #include <chrono>
 
 #include "spira/base/error.h"
+#include "spira/base/units.h"
 #include "spira/field/harmonic_field.h"
 #include "spira/field/heat_distance.h"
 #include "spira/path/spiral_builder.h"
@@ -37,8 +38,10 @@ ParamSet paramsFor(const PlanRequest& r, const std::string& section)
 PlanOutput planPart(const PluginRegistry& registry, const PlanRequest& request, Progress& progress)
 {
   // Settings first: a contradictory window is reported before any computation.
-  const SpiralSettings spiralSettings = spiralSettingsFrom(paramsFor(request, "spiral"));
+  SpiralSettings spiralSettings = spiralSettingsFrom(paramsFor(request, "spiral"));
   const ProcessSettings processSettings = processSettingsFrom(paramsFor(request, "process"));
+  if (spiralSettings.minRevolutionLength <= 0.0)
+    spiralSettings.minRevolutionLength = kPi * processSettings.beadWidth;
   const DecomposerPlugin& decomposer = registry.decomposer(request.decomposerId);
   const ParamSet decomposerParams =
       paramsFor(request, request.decomposerId).withDefaults(decomposer.schema());
