@@ -96,6 +96,8 @@ TEST(CliPlan, CylinderWritesTheContractedFiles)
     EXPECT_NEAR(row.n.cross(row.t).dot(row.b), 1.0, 1e-9);  // b = n x t
     EXPECT_NEAR(row.wfs, 2.3, 1e-9);                        // synergic: constant wire feed, m/min
     EXPECT_EQ(row.arc, 1);
+    EXPECT_GE(row.height, 0.9 - 0.005);  // the whole path, ramps included, in the window
+    EXPECT_LE(row.height, 1.1 + 0.005);
   }
   EXPECT_NEAR(zMax, 100.0, 1e-6);
 }
@@ -130,21 +132,47 @@ TEST(CliPlan, HeightsRecomputedFromTheCsvMatchTheHeightColumn)
   EXPECT_GT(tsAtMin, tsAtMax);
 }
 
-TEST(CliPlan, DomeEndsAtTheClosurePoint)
+// A closed part end to end with the defaults (h = 2 mm +/- 10 %, bead width 5.2 mm): every deposit
+// of the path, start-up, termination and closure point included, lies in the window; the rings
+// narrower than pi x bead width are folded into the closure point, which is reached once, last.
+TEST(CliPlan, DomeIsFeasibleEverywhereAndEndsAtTheClosurePoint)
 {
   TempDir dir;
   const CliRun r =
       runCli({"plan", sample("dome.stl").string(), "-o", dir.path().string(), "--points-per-rev", "90"});
-  ASSERT_TRUE(r.exitCode == 0 || r.exitCode == 4) << r.err;
+  ASSERT_EQ(r.exitCode, 0) << r.err;
   const auto report = readJson(dir / "report.json");
   EXPECT_EQ(report["part_type"], "closed");
+  EXPECT_TRUE(report["feasible"].get<bool>());
+  EXPECT_EQ(report["violations"], 0);
   ASSERT_TRUE(report["closure_point"].is_array());
   const Vec3 c(report["closure_point"][0], report["closure_point"][1], report["closure_point"][2]);
   EXPECT_LT((c - Vec3(0, 0, 60)).norm(), 0.5);
   std::string header;
   const auto rows = readTrajectory(dir / "trajectory.csv", &header);
-  ASSERT_FALSE(rows.empty());
+  ASSERT_GT(rows.size(), 90u);
   EXPECT_LT((rows.back().p - c).norm(), 1e-6);
+  const double tol = 0.005 * 2.0;
+  size_t atClosure = 0;
+  for (const auto& row : rows) {
+    EXPECT_GE(row.height, 1.8 - tol) << "rev " << row.rev << " gen " << row.gen;
+    EXPECT_LE(row.height, 2.2 + tol) << "rev " << row.rev << " gen " << row.gen;
+    EXPECT_EQ(row.arc, 1);
+    atClosure += (row.p - c).norm() < 1e-6;
+  }
+  EXPECT_EQ(atClosure, 1u);
+  // The last ring is at least pi x 5.2 mm around (radius >= half the bead width) and the ring
+  // before it was folded, so the gap left to the pole (about the ring's radius on the flat top) is
+  // under half a bead width plus one step.
+  double ring = 0.0;
+  for (size_t q = rows.size() - 90; q + 1 < rows.size(); ++q) ring += (rows[q].p - rows[q - 1].p).norm();
+  EXPECT_GE(ring, kPi * 5.2 * 0.99);
+  const double gap = report["closure_gap"].get<double>();
+  const auto& ringStart = rows[rows.size() - 1 - 90];  // generatrix 0, where the gap is measured
+  ASSERT_EQ(ringStart.gen, 0);
+  const double radius = (ringStart.p - c).head<2>().norm();
+  EXPECT_NEAR(gap, radius, 0.1 * gap);
+  EXPECT_LT(gap, 5.2 / 2.0 + 2.2 * 1.05);
 }
 
 // An open wall whose top edge is slanted: generatrices from H - a to H + a long.
