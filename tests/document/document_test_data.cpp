@@ -63,6 +63,14 @@ CellRecord sampleCell()
   c.positionerUrdf = "robots/dkp400/dkp400.urdf";
   c.T_world_positioner = transformFromXyzRpy(Vec3(800.0, 0.0, 0.0), Vec3(0, 0, M_PI / 2));
   c.mounting = PartMounting::Positioner;
+  c.robotBaseLink = "base";
+  c.robotTipLink = "flange_tool0";
+  c.j23Coupling = 1;
+  c.positionerBaseLink = "pos_base";
+  c.positionerTipLink = "pos_top";
+  c.T_mount_part = transformFromXyzRpy(Vec3(1.5, -2.25, 30.0), Vec3(0, 0, 0.125));
+  c.keepBuildVertical = false;
+  c.cableTwistLimitDeg = 95.5;
   for (int i = 0; i < 6; ++i)
     c.robotAxes.push_back(CellAxis{"joint_a" + std::to_string(i + 1), i % 2 ? -1 : 1, i == 2 ? -90.0 : 0.0,
                                    -170.0 + i, 170.0 - i, 100.0 + 0.1 * i});

@@ -76,7 +76,11 @@ bool CellAxis::operator==(const CellAxis& o) const
 
 bool CellRecord::operator==(const CellRecord& o) const
 {
-  return name == o.name && robotUrdf == o.robotUrdf && controller == o.controller &&
+  return name == o.name && robotUrdf == o.robotUrdf && robotBaseLink == o.robotBaseLink &&
+         robotTipLink == o.robotTipLink && controller == o.controller && j23Coupling == o.j23Coupling &&
+         positionerBaseLink == o.positionerBaseLink && positionerTipLink == o.positionerTipLink &&
+         codec::sameTransform(T_mount_part, o.T_mount_part) && keepBuildVertical == o.keepBuildVertical &&
+         cableTwistLimitDeg == o.cableTwistLimitDeg &&
          codec::sameTransform(T_world_robotbase, o.T_world_robotbase) && tool == o.tool &&
          positionerUrdf == o.positionerUrdf &&
          codec::sameTransform(T_world_positioner, o.T_world_positioner) && mounting == o.mounting &&
@@ -89,7 +93,15 @@ nlohmann::json cellRecordToJson(const CellRecord& c)
   j["schema"] = kCellSchema;
   j["name"] = c.name;
   j["robot_urdf"] = c.robotUrdf;
+  j["robot_base_link"] = c.robotBaseLink;
+  j["robot_tip_link"] = c.robotTipLink;
   j["controller"] = controllerFamilyName(c.controller);
+  j["j23_coupling"] = c.j23Coupling;
+  j["positioner_base_link"] = c.positionerBaseLink;
+  j["positioner_tip_link"] = c.positionerTipLink;
+  j["T_mount_part"] = codec::transformToJson(c.T_mount_part);
+  j["keep_build_vertical"] = c.keepBuildVertical;
+  j["cable_twist_limit_deg"] = c.cableTwistLimitDeg;
   j["T_world_robotbase"] = codec::transformToJson(c.T_world_robotbase);
   j["tool"] = {{"T_flange_tcp", codec::transformToJson(c.tool.T_flange_tcp)},
                {"nozzle_radius", c.tool.nozzleRadius},
@@ -141,6 +153,21 @@ CellRecord cellRecordFromJson(const nlohmann::json& j)
     badCell("unknown mounting '" + mounting + "' (use fixed_table or positioner)");
   c.robotAxes = axesFromJson(j, "robot_axes");
   c.positionerAxes = axesFromJson(j, "positioner_axes");
+  // Added after the first projects were written: optional, defaults when absent.
+  if (j.contains("robot_base_link")) c.robotBaseLink = codec::stringField(j, "robot_base_link", what);
+  if (j.contains("robot_tip_link")) c.robotTipLink = codec::stringField(j, "robot_tip_link", what);
+  if (j.contains("j23_coupling")) c.j23Coupling = static_cast<int>(codec::intField(j, "j23_coupling", what));
+  if (j.contains("positioner_base_link"))
+    c.positionerBaseLink = codec::stringField(j, "positioner_base_link", what);
+  if (j.contains("positioner_tip_link"))
+    c.positionerTipLink = codec::stringField(j, "positioner_tip_link", what);
+  if (j.contains("T_mount_part"))
+    c.T_mount_part = codec::transformFromJson(codec::field(j, "T_mount_part", what), "cell T_mount_part");
+  if (j.contains("keep_build_vertical"))
+    c.keepBuildVertical = codec::boolField(j, "keep_build_vertical", what);
+  if (j.contains("cable_twist_limit_deg"))
+    c.cableTwistLimitDeg = codec::numberField(j, "cable_twist_limit_deg", what);
+  if (c.j23Coupling < -1 || c.j23Coupling > 1) badCell("j23_coupling must be -1, 0 or 1");
   return c;
 }
 

@@ -52,14 +52,29 @@ struct CellAxis {
 struct CellRecord {
   std::string name;
   std::string robotUrdf;  // path of the robot URDF
+  // The chain the kinematics solve: from the URDF link that is the controller's base frame
+  // ($ROBROOT; FANUC World, "base" in ROS-Industrial URDFs) to the flange link (tool0).
+  std::string robotBaseLink = "base_link";
+  std::string robotTipLink = "tool0";
   ControllerFamily controller = ControllerFamily::KukaKrc4;
+  // FANUC J2/J3 linkage: URDF q3 = J3 + factor * J2 (1 for most FANUC arms, 0 for none).
+  int j23Coupling = 0;
   // Robot base frame -> world frame (p_world = T_world_robotbase * p_base).
   Transform T_world_robotbase = Transform::Identity();
   ToolRecord tool;
   std::string positionerUrdf;  // empty: no positioner
   // Positioner base frame -> world frame.
   Transform T_world_positioner = Transform::Identity();
+  std::string positionerBaseLink = "base_link";
+  std::string positionerTipLink = "table_top";
   PartMounting mounting = PartMounting::FixedTable;
+  // Part frame -> mount frame: the world for a fixed table, the positioner's table top (tip link)
+  // when mounted on the positioner. The part frame is the frame its mesh coordinates are in.
+  Transform T_mount_part = Transform::Identity();
+  // Positioner: turn the table so that the local build direction stays vertical (flat welding).
+  bool keepBuildVertical = true;
+  // Torch cable: |q4 + q6| limit for torch-carried cables, degrees (0: no limit).
+  double cableTwistLimitDeg = 120.0;
   std::vector<CellAxis> robotAxes;       // controller order A1..A6
   std::vector<CellAxis> positionerAxes;  // controller order E1..
 
