@@ -1,0 +1,70 @@
+#pragma once
+
+#include <array>
+#include <string>
+#include <vector>
+
+#include "spira/base/progress.h"
+#include "spira/base/transform.h"
+#include "spira/plugin/exporter.h"
+
+namespace spira {
+
+// How the process is commanded along the path.
+enum class ProcessCommand {
+  Speed,        // per-move speed from the TS channel; the weld job sets the wire feed
+  SpeedAnalog,  // per-move speed, and the WFS channel on an analog output
+  Analog,       // one constant speed (the first deposition move's), WFS on an analog output
+};
+
+// The settings every exporter shares (see export_params.h for their schema entries).
+struct PathOptions {
+  std::string controller;         // "kuka_krc4" or "fanuc_r30ib": a joint trajectory must match
+  double approachDistance = 0.0;  // mm back along the torch axis; 0 = start and end on the path
+  double approachSpeed = 20.0;    // mm/s on the approach and retract moves
+  ProcessCommand process = ProcessCommand::Speed;
+  double wfsDeadband = 0.0;  // mm/s: a WFS setpoint is written only when WFS moved this much
+  bool force = false;        // export even with unreachable, colliding or out-of-limit points
+};
+
+// One path point as the writers need it. Move k is the motion INTO point k.
+struct ExportPoint {
+  // The target: T_base_tcp from the solved cell (controller base frame), or without a cell the
+  // torch frame in the part frame (toolFrame with spin 0). mm.
+  Transform pose = Transform::Identity();
+  double speed = 0.0;     // mm/s of move k in the target's frame (the TS channel for a fixed part)
+  double moveTime = 0.0;  // s: planned duration of move k, |part-frame step| / TS (0 for point 0)
+  double wfs = 0.0;       // mm/s, the WFS channel of point k
+  bool writeWfs = false;  // analog modes: the WFS setpoint of move k must be written (deadband)
+  std::array<double, 6> robotDeg{};
+  std::array<double, 2> externalDeg{};
+  int kukaStatus = 0;
+  int kukaTurn = 0;
+  std::string fanucConfig;
+  std::string problem;  // "unreachable", "in collision", "A5 outside its limits"...; empty when fine
+};
+
+// The trajectory checked and turned into controller-ready targets, shared by the exporters.
+struct ExportPath {
+  std::vector<ExportPoint> points;             // one per trajectory point, same order
+  Transform approach = Transform::Identity();  // = points.front().pose when there is no approach
+  Transform retract = Transform::Identity();   // = points.back().pose when there is no retract
+  bool hasApproach = false;
+  size_t arcStart = 0;  // first point with the arc on: the arc is struck there
+  size_t arcEnd = 0;    // last point with the arc on: the arc is put out there
+  bool hasJoints = false;
+  bool hasPositioner = false;
+  size_t flaggedCount = 0;  // points with a problem (written only when forced)
+  double length = 0.0;      // mm, part frame
+  std::vector<std::string> warnings;
+};
+
+// Checks `input` against `options` and builds the targets. Throws InputError when the plan
+// cannot be exported: fewer than two points, no deposition (arc on at fewer than two points),
+// non-finite or non-positive channels, a joint trajectory of another size or controller, or
+// (unless options.force) points that are unreachable, in collision or outside joint limits.
+// Recoverable findings (joint speeds over the limits, configuration changes, arc gaps) are
+// returned as warnings.
+ExportPath prepareExportPath(const ExportInput& input, const PathOptions& options, Progress& progress);
+
+}  // namespace spira
