@@ -42,7 +42,7 @@ struct PlanOutput {
   StageTimings timings;
   std::vector<std::string> warnings;
 
-  // Within the process window (Eq. 3.6 and 3.15 on the modulated revolutions). Process-limit
+  // Within the process window (Eq. 3.6, and Eq. 3.15 on every point). Process-limit
   // violations do not make a plan infeasible: the speeds are clamped to the limits and each
   // violation is reported (they arise where the spiral degenerates, at a closure point).
   bool feasible() const { return spiral.report.feasible; }

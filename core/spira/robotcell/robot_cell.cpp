@@ -5,6 +5,7 @@
 #include "spira/base/atomic_file.h"
 #include "spira/base/error.h"
 #include "spira/base/units.h"
+#include "spira/path/tool_frame.h"
 
 namespace spira {
 
@@ -116,6 +117,28 @@ JointPathSetup RobotCell::setup(const std::optional<Transform>& worldPart) const
   } else {
     s.basePart = T_world_base_.inverse() * worldPart.value_or(record_.T_mount_part);
   }
+  return s;
+}
+
+JointPathSetup RobotCell::seededSetup(const Trajectory& path, const std::optional<Transform>& worldPart) const
+{
+  JointPathSetup s = setup(worldPart);
+  if (path.empty() || !ik_) return s;
+  const TrajectoryPoint& first = path.points.front();
+  Transform basePart = s.basePart;
+  if (s.positioner) {
+    const auto e = s.positioner->solve(s.tablePart.linear() * first.build, s.positionerSeed);
+    if (!e) return s;
+    s.positionerSeed = *e;
+    basePart = s.basePositioner * s.positioner->forward(*e) * s.tablePart;
+  }
+  const auto solutions = ik_->solveAll(basePart * toolFrame(first, s.spinRad) * s.flangeTcp.inverse());
+  if (solutions.empty()) return s;
+  const IkSolution* best = &solutions.front();
+  for (const IkSolution& sol : solutions)
+    if (sol.limitMargin > best->limitMargin) best = &sol;
+  s.seed = best->q;
+  s.configuration = best->configuration;
   return s;
 }
 

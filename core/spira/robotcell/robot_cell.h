@@ -41,6 +41,12 @@ class RobotCell {
   // The solver setup for a part whose mesh frame is placed by the cell (T_mount_part), or by
   // `worldPart` when given (fixed-table cells only: the document's part placement).
   JointPathSetup setup(const std::optional<Transform>& worldPart = std::nullopt) const;
+  // setup() with the seed and configuration chosen at the path's first point: of the IK solutions
+  // there within the controller limits, the one farthest from them (so the path starts where the
+  // arm has the most room). Without any, the first solution; without a solution at all, unchanged
+  // (every point is then reported unreachable).
+  JointPathSetup seededSetup(const Trajectory& path,
+                             const std::optional<Transform>& worldPart = std::nullopt) const;
 
  private:
   CellRecord record_;

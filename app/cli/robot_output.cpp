@@ -1,0 +1,69 @@
+#include "robot_output.h"
+
+#include <ctime>
+#include <filesystem>
+#include <iomanip>
+#include <ostream>
+#include <sstream>
+
+#include "cli_common.h"
+
+namespace spira::cli {
+
+const ExporterPlugin& exporterFor(const PluginRegistry& registry, const std::string& format)
+{
+  const std::string id = format.find('.') == std::string::npos ? "export." + format : format;
+  const Plugin* p = registry.find(id);
+  if (!p || p->kind() != PluginKind::Exporter) {
+    std::string formats;
+    for (const Plugin* e : registry.ofKind(PluginKind::Exporter))
+      formats += (formats.empty() ? "" : ", ") + e->id().substr(e->id().find('.') + 1);
+    throw UsageError("unknown program format '" + format + "'", "use one of: " + formats);
+  }
+  return registry.exporter(id);
+}
+
+std::map<std::string, std::string> programHeader(const std::string& partFile, const std::string& cellFile,
+                                                 const nlohmann::json& r)
+{
+  std::map<std::string, std::string> h;
+  h["part"] = std::filesystem::path(partFile).filename().string();
+  h["cell"] = cellFile.empty() ? "none (targets in the part frame)" : r.value("cell", cellFile);
+  const std::time_t now = std::time(nullptr);
+  std::ostringstream date;
+  date << std::put_time(std::gmtime(&now), "%Y-%m-%d %H:%M UTC");
+  h["date"] = date.str();
+  std::ostringstream plan;
+  plan << std::setprecision(4) << r.value("part_type", "") << " part, " << r.value("n_revolutions", 0)
+       << " revolutions, deposit " << r.value("height_min", 0.0) << " .. " << r.value("height_max", 0.0)
+       << " mm, path " << r.value("path_length", 0.0) << " mm";
+  h["plan"] = plan.str();
+  return h;
+}
+
+void printMotionSummary(const nlohmann::json& r, std::ostream& out)
+{
+  out << std::fixed << std::setprecision(3);
+  out << "cell " << r.value("cell", "") << ": " << (r.value("reachable", false) ? "reachable" : "UNREACHABLE")
+      << " (" << r.value("unreachable_points", 0) << " point(s) out of reach or limits), configuration "
+      << r.value("configuration", "") << "\n";
+  out << "joint-limit margin " << r.value("min_joint_limit_margin_deg", 0.0) << " deg ("
+      << r.value("min_joint_limit_margin_axis", "") << "), dexterity >= " << r.value("min_dexterity", 0.0)
+      << ", joint speed <= " << 100.0 * r.value("max_joint_speed_ratio", 0.0) << " % of the limit ("
+      << r.value("max_joint_speed_axis", "") << ")\n";
+  out << "torch collisions: " << r.value("collisions_detected", 0) << " detected, "
+      << r.value("collisions_resolved", 0) << " resolved by tilting, " << r.value("collisions", 0)
+      << " left\n";
+}
+
+void printExportSummary(const ExportOutcome& e, std::ostream& out)
+{
+  out << "program: " << e.prep.pointsIn << " planned points -> " << e.robotTargets
+      << " robot targets (chord <= " << std::setprecision(4) << e.prep.maxChordDeviation << " mm), "
+      << e.result.files.size() << " file(s):";
+  for (const auto& f : e.result.files) out << " " << f.filename().string();
+  out << "\n";
+  for (const auto& w : e.result.warnings) out << "warning: " << w << "\n";
+}
+
+}  // namespace spira::cli

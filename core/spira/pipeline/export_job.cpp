@@ -1,0 +1,38 @@
+#include "spira/pipeline/export_job.h"
+
+#include <chrono>
+
+#include "spira/kinematics/joint_path_solver.h"
+
+namespace spira {
+
+ExportOutcome exportTrajectory(const PluginRegistry& registry, const Trajectory& planned,
+                               const ExportJob& job, const std::filesystem::path& outDir, Progress& progress)
+{
+  const auto t0 = std::chrono::steady_clock::now();
+  const ExporterPlugin& exporter = registry.exporter(job.exporterId);
+  const ParamSet params = job.exporterParams.withDefaults(exporter.schema());
+  exporter.schema().validate(params);
+
+  ExportOutcome out;
+  SubProgress prepProgress(progress, 0.0, 0.4, "path preparation");
+  const PreparedTrajectory prepared = prepareTrajectory(planned, job.prep, prepProgress);
+  out.prep = prepared.report;
+  out.robotTargets = prepared.trajectory.size();
+
+  JointTrajectory joints;
+  if (job.cell) {
+    SubProgress ikProgress(progress, 0.4, 0.7, "robot targets");
+    const JointPathSetup setup = job.cell->seededSetup(prepared.trajectory);
+    joints =
+        solveJointTrajectory(job.cell->ik(), job.cell->convention(), prepared.trajectory, setup, ikProgress);
+    for (const JointPoint& p : joints.points) out.unreachableTargets += !p.reachable;
+  }
+  SubProgress writeProgress(progress, 0.7, 1.0, "writing the program");
+  const ExportInput input{prepared.trajectory, job.cell ? &joints : nullptr, job.header};
+  out.result = exporter.write(input, params, outDir, writeProgress);
+  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return out;
+}
+
+}  // namespace spira

@@ -1,0 +1,34 @@
+#pragma once
+
+#include <nlohmann/json.hpp>
+
+#include "spira/base/progress.h"
+#include "spira/path/joint_trajectory.h"
+#include "spira/path/trajectory.h"
+#include "spira/robotcell/robot_cell.h"
+
+namespace spira {
+
+struct MotionSettings {
+  double beadWidth = 5.2;   // mm: the deposit tube the torch must clear
+  double substrateZ = 0.0;  // mm, part frame: the substrate plane (normal +Z)
+  // Tilt the torch about the travel direction where it would hit the deposit or the substrate
+  // (the source's resolution); off: collisions are only reported.
+  bool resolveCollisions = true;
+};
+
+// The robot side of a plan: the torch checked (and, when allowed, tilted) against the deposit so
+// far and the substrate, then every point solved on the cell.
+struct PlanMotion {
+  Trajectory trajectory;  // the plan, with torch tilts where collisions were resolved
+  JointTrajectory joints;
+  bool reachable = false;  // every point reached within the controller limits
+  size_t unresolvedCollisions = 0;
+  nlohmann::json report;  // the report.json keys of the cell (see plan_motion.cpp)
+  bool ok() const { return reachable && unresolvedCollisions == 0; }
+};
+
+PlanMotion solvePlanMotion(const RobotCell& cell, const Trajectory& plan, const MotionSettings& settings,
+                           Progress& progress);
+
+}  // namespace spira

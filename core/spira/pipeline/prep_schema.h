@@ -1,0 +1,14 @@
+#pragma once
+
+#include "spira/plugin/parameter.h"
+#include "spira/prep/prep_params.h"
+
+namespace spira {
+
+// The "prep" section of the plan settings: path preparation before a robot program is written
+// (smoothing, decimation under chord and attribute tolerances, point spacing). See prep_params.h.
+const ParamSchema& prepSchema();
+// Throws InputError for values outside the schema or a minimum spacing above the maximum.
+PrepParams prepParamsFrom(const ParamSet& values);
+
+}  // namespace spira
