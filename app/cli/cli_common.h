@@ -39,5 +39,7 @@ int cmdPlugins(const std::vector<std::string>& args);
 int cmdSample(const std::vector<std::string>& args);
 int cmdPlan(const std::vector<std::string>& args);
 int cmdField(const std::vector<std::string>& args);
+int cmdKin(const std::vector<std::string>& args);
+int cmdExport(const std::vector<std::string>& args);
 
 }  // namespace spira::cli

@@ -19,6 +19,8 @@ constexpr const char* kUsageText =
     "  plugins          list plugins and their parameter schemas\n"
     "  field PART --kind geodesic|harmonic -o FILE   per-vertex scalar field as .csv or .vtp\n"
     "  plan PART -o DIR   plan one continuous spiral: DIR/trajectory.csv and DIR/report.json\n"
+    "  kin CELL --fk J1..J6 | --ik X Y Z A B C   forward / inverse kinematics of a cell's robot\n"
+    "  export PLAN_DIR --format krl|fanuc_tp -o DIR   robot program of a plan\n"
     "  sample NAME -o FILE   write a bundled sample part (open-cylinder, dome, cone) made in code\n"
     "\n"
     "options: --help (also after a command), --version\n"
@@ -32,6 +34,8 @@ int dispatch(const std::string& command, const std::vector<std::string>& rest)
   if (command == "sample") return cmdSample(rest);
   if (command == "plan") return cmdPlan(rest);
   if (command == "field") return cmdField(rest);
+  if (command == "kin") return cmdKin(rest);
+  if (command == "export") return cmdExport(rest);
   throw UsageError("unknown command '" + command + "'", "run 'spira-cli --help' for the list of commands");
 }
 
