@@ -10,8 +10,8 @@
 #include "spira/base/error.h"
 #include "spira/document/cell_file.h"
 #include "spira/pipeline/prep_schema.h"
-#include "spira/plugin/param_cli.h"
 #include "spira/planning/trajectory_csv_reader.h"
+#include "spira/plugin/param_cli.h"
 
 namespace spira::cli {
 namespace {

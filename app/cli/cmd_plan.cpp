@@ -142,6 +142,7 @@ int cmdPlan(const std::vector<std::string>& argv)
     ms.beadWidth = processSettingsFrom(planFlags.values["process"]).beadWidth;
     ms.substrateZ = req.substrateZ;
     ms.resolveCollisions = !keepCollisions;
+    ms.part = &part.mesh;
     motion = solvePlanMotion(*cell, plan.spiral.trajectory, ms, progress);
     plan.timings.push_back(
         {"kinematics", std::chrono::duration<double>(std::chrono::steady_clock::now() - tm).count()});

@@ -54,6 +54,13 @@ void printMotionSummary(const nlohmann::json& r, std::ostream& out)
   out << "torch collisions: " << r.value("collisions_detected", 0) << " detected, "
       << r.value("collisions_resolved", 0) << " resolved by tilting, " << r.value("collisions", 0)
       << " left\n";
+  out << "robot links: " << r.value("robot_collisions", 0) << " of " << r.value("robot_points_checked", 0)
+      << " checked points collide";
+  if (r.contains("robot_collision_links") && !r["robot_collision_links"].empty())
+    out << " (" << r["robot_collision_links"].dump() << ")";
+  out << "\n";
+  if (r.contains("cell_warnings"))
+    for (const auto& w : r["cell_warnings"]) out << "warning: " << w.get<std::string>() << "\n";
 }
 
 void printExportSummary(const ExportOutcome& e, std::ostream& out)

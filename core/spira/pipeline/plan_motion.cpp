@@ -6,6 +6,7 @@
 #include "spira/base/units.h"
 #include "spira/collision/collision_resolver.h"
 #include "spira/kinematics/joint_path_solver.h"
+#include "spira/robotcell/robot_collision_model.h"
 
 namespace spira {
 namespace {
@@ -52,6 +53,41 @@ double maxJointSpeedRatio(const JointTrajectory& joints, const Trajectory& path,
   return worst;
 }
 
+struct LinkCheck {
+  std::vector<size_t> points;  // checked points where a link hits
+  std::vector<std::string> links;
+  size_t checked = 0;
+  std::vector<std::string> warnings;
+};
+
+LinkCheck checkRobotLinks(const RobotCell& cell, const JointPathSetup& setup, const Trajectory& path,
+                          const JointTrajectory& joints, const MotionSettings& settings, Progress& progress)
+{
+  LinkCheck out;
+  const RobotCollisionModel model(cell, *settings.part, Vec3(600, 600, 20), settings.substrateZ);
+  out.warnings = model.warnings();
+  double since = settings.linkCheckSpacing;
+  for (size_t i = 0; i < path.size(); ++i) {
+    if (i > 0) since += (path.points[i].position - path.points[i - 1].position).norm();
+    if (since < settings.linkCheckSpacing && i + 1 < path.size()) continue;
+    since = 0.0;
+    if ((out.checked & 63) == 0) progress.checkCancel();
+    ++out.checked;
+    const JointPoint& j = joints.points[i];
+    const JointVector q = cell.convention().fromControllerDeg(j.robotDeg);
+    const Eigen::Vector2d e(degToRad(j.externalDeg[0]), degToRad(j.externalDeg[1]));
+    const Transform basePart = setup.positioner
+                                   ? setup.basePositioner * setup.positioner->forward(e) * setup.tablePart
+                                   : setup.basePart;
+    const auto hits = model.armHits(q, basePart, e);
+    if (hits.empty()) continue;
+    out.points.push_back(i);
+    for (const auto& h : hits)
+      if (std::find(out.links.begin(), out.links.end(), h) == out.links.end()) out.links.push_back(h);
+  }
+  return out;
+}
+
 }  // namespace
 
 PlanMotion solvePlanMotion(const RobotCell& cell, const Trajectory& plan, const MotionSettings& settings,
@@ -73,10 +109,17 @@ PlanMotion solvePlanMotion(const RobotCell& cell, const Trajectory& plan, const 
   out.unresolvedCollisions = unresolved.size();
   out.trajectory = settings.resolveCollisions ? std::move(resolution.trajectory) : plan;
 
-  SubProgress ikProgress(progress, 0.4, 1.0, "joint motion");
+  SubProgress ikProgress(progress, 0.4, 0.8, "joint motion");
   const JointPathSetup setup = cell.seededSetup(out.trajectory);
   out.joints = solveJointTrajectory(cell.ik(), cell.convention(), out.trajectory, setup, ikProgress);
   for (size_t i : unresolved) out.joints.points[i].collision = true;
+  LinkCheck links;
+  if (settings.part) {
+    SubProgress linkProgress(progress, 0.8, 1.0, "robot links");
+    links = checkRobotLinks(cell, setup, out.trajectory, out.joints, settings, linkProgress);
+    for (size_t i : links.points) out.joints.points[i].collision = true;
+    out.robotCollisions = links.points.size();
+  }
 
   std::vector<size_t> unreachable;
   double minMargin = std::numeric_limits<double>::infinity(), minDexterity = 1.0, maxTwist = 0.0;
@@ -114,6 +157,11 @@ PlanMotion solvePlanMotion(const RobotCell& cell, const Trajectory& plan, const 
   r["collision_indices"] = firstIndices(unresolved);
   r["collisions_detected"] = colliding.size();
   r["collisions_resolved"] = settings.resolveCollisions ? colliding.size() - unresolved.size() : 0;
+  r["robot_collisions"] = links.points.size();
+  r["robot_collision_indices"] = firstIndices(links.points);
+  r["robot_collision_links"] = links.links;
+  r["robot_points_checked"] = links.checked;
+  r["cell_warnings"] = links.warnings;
   r["optimisation"] = {
       {"mode", "constant_spin"}, {"objective_before", nullptr}, {"objective_after", nullptr}};
   return out;

@@ -3,6 +3,7 @@
 #include <nlohmann/json.hpp>
 
 #include "spira/base/progress.h"
+#include "spira/mesh/triangle_mesh.h"
 #include "spira/path/joint_trajectory.h"
 #include "spira/path/trajectory.h"
 #include "spira/robotcell/robot_cell.h"
@@ -15,6 +16,10 @@ struct MotionSettings {
   // Tilt the torch about the travel direction where it would hit the deposit or the substrate
   // (the source's resolution); off: collisions are only reported.
   bool resolveCollisions = true;
+  // The part's mesh (its own frame): with it, the robot's links are checked against the part, the
+  // plate under it and the positioner every `linkCheckSpacing` mm of path (and at both ends).
+  const TriangleMesh* part = nullptr;
+  double linkCheckSpacing = 10.0;
 };
 
 // The robot side of a plan: the torch checked (and, when allowed, tilted) against the deposit so
@@ -22,10 +27,11 @@ struct MotionSettings {
 struct PlanMotion {
   Trajectory trajectory;  // the plan, with torch tilts where collisions were resolved
   JointTrajectory joints;
-  bool reachable = false;  // every point reached within the controller limits
-  size_t unresolvedCollisions = 0;
-  nlohmann::json report;  // the report.json keys of the cell (see plan_motion.cpp)
-  bool ok() const { return reachable && unresolvedCollisions == 0; }
+  bool reachable = false;           // every point reached within the controller limits
+  size_t unresolvedCollisions = 0;  // torch against deposit and substrate
+  size_t robotCollisions = 0;       // checked points where a robot link hits something
+  nlohmann::json report;            // the report.json keys of the cell (see plan_motion.cpp)
+  bool ok() const { return reachable && unresolvedCollisions == 0 && robotCollisions == 0; }
 };
 
 PlanMotion solvePlanMotion(const RobotCell& cell, const Trajectory& plan, const MotionSettings& settings,

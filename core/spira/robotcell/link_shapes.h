@@ -1,0 +1,37 @@
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "spira/collision/triangle_bvh.h"
+#include "spira/kinematics/kinematic_chain.h"
+#include "spira/mesh/triangle_mesh.h"
+
+namespace spira {
+
+// The collision geometry of a robot's links (URDF <collision>: meshes, boxes, cylinders, spheres),
+// in mm, each with the chain that places its link: T_base_link(q) = chain.forward(q.head(joints)),
+// where q are the joints of the whole arm (the link moves with the first `joints` of them).
+struct LinkShape {
+  std::string link;
+  std::unique_ptr<KinematicChain> chain;  // base link -> this link
+  size_t joints = 0;
+  TriangleMesh mesh;  // in the link frame
+  std::unique_ptr<TriangleBvh> bvh;
+  bool placeholder = false;  // its mesh file was missing: a 100 mm cube stands in
+};
+
+struct RobotShapes {
+  std::vector<LinkShape> links;
+  std::vector<std::string> warnings;  // missing or unreadable meshes, by file
+};
+
+// Reads the collision geometry of every link of the URDF from `baseLink` along the chain to
+// `tipLink` (and the links fixed to them). Mesh paths are relative to the URDF's folder; STL meshes
+// are read (other formats and missing files get a placeholder cube and a warning, never an error:
+// the cell still displays and plans). Throws InputError when the URDF does not parse.
+RobotShapes readRobotShapes(const std::string& urdfPath, const std::string& baseLink,
+                            const std::string& tipLink);
+
+}  // namespace spira
