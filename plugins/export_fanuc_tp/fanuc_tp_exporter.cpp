@@ -84,10 +84,11 @@ ParamSchema makeSchema()
              "one. The arc start and end points are always FINE.",
              "Motion"));
   defs.push_back(
-      choiceDef("speed_unit", "mm/sec", {"mm/sec", "cm/min", "msec"}, "Speed unit",
+      choiceDef("speed_unit", "auto", {"auto", "mm/sec", "cm/min", "msec"}, "Speed unit",
                 "mm/sec and cm/min write the plan's travel speed rounded to whole units (cm/min is "
                 "six times finer); msec writes each move's planned duration, which also holds with a "
-                "moving positioner.",
+                "moving positioner. auto: msec with a positioner (the table carries the part under a "
+                "torch that hardly moves, so a TCP speed would be meaningless), mm/sec otherwise.",
                 "Motion"));
   defs.push_back(approachDistanceParam());
   defs.push_back(approachSpeedParam(2000.0));
@@ -175,7 +176,10 @@ ExportResult FanucTpExporter::write(const ExportInput& input, const ParamSet& pa
   s.jointPositions = values.getString("position_format") == "joint";
   s.defaultConfig = values.getString("default_config");
   s.cnt = static_cast<int>(values.getInt("cnt"));
-  s.speedUnit = speedUnit(values.getString("speed_unit"));
+  const std::string unit = values.getString("speed_unit") != "auto"      ? values.getString("speed_unit")
+                           : input.joints && input.joints->hasPositioner ? "msec"
+                                                                         : "mm/sec";
+  s.speedUnit = speedUnit(unit);
   s.approachSpeed = options.approachSpeed;
   s.jointSpeed = static_cast<int>(values.getInt("joint_speed"));
   s.process = options.process;
@@ -213,7 +217,7 @@ ExportResult FanucTpExporter::write(const ExportInput& input, const ParamSet& pa
         " and check the configuration before running");
   }
   if (path.hasPositioner) settings.emplace_back("positioner", "GP2, not coordinated");
-  settings.emplace_back("speed", values.getString("speed_unit") + ", CNT" + std::to_string(s.cnt));
+  settings.emplace_back("speed", unit + ", CNT" + std::to_string(s.cnt));
   settings.emplace_back(
       "process", std::string(processCommandName(s.process)) + ", Arc Start[" +
                      std::to_string(s.weldSchedule) + "], Arc End[" + std::to_string(s.endSchedule) + "]" +
@@ -225,8 +229,8 @@ ExportResult FanucTpExporter::write(const ExportInput& input, const ParamSet& pa
 
   const TpOutput out = writeTpProgram(path, s, header, progress);
   if (out.worstSpeedError > 0.05)
-    result.warnings.push_back("rounding to whole " + values.getString("speed_unit") +
-                              " changes a move's speed by up to " + percent(out.worstSpeedError) +
+    result.warnings.push_back("rounding to whole " + unit + " changes a move's speed by up to " +
+                              percent(out.worstSpeedError) +
                               "; choose cm/min or msec for slow travel speeds");
   progress.report(0.9, "writing files");
   result.files = writeFileSet(outDir, out.files);

@@ -2,7 +2,8 @@
 
 #include <chrono>
 
-#include "spira/kinematics/joint_path_solver.h"
+#include "spira/motion/motion_solver.h"
+#include "spira/pipeline/plan_motion.h"
 
 namespace spira {
 
@@ -24,8 +25,13 @@ ExportOutcome exportTrajectory(const PluginRegistry& registry, const Trajectory&
   if (job.cell) {
     SubProgress ikProgress(progress, 0.4, 0.7, "robot targets");
     const JointPathSetup setup = job.cell->seededSetup(prepared.trajectory);
-    joints =
-        solveJointTrajectory(job.cell->ik(), job.cell->convention(), prepared.trajectory, setup, ikProgress);
+    // The prepared points are solved (and their spin optimised) afresh: fewer points than the plan,
+    // so the program's joints are exactly those of its own targets.
+    MotionSettings ms;
+    ms.optimiseSpin = job.optimiseSpin;
+    joints = solveMotion(job.cell->ik(), job.cell->convention(), prepared.trajectory, setup,
+                         motionParamsFor(*job.cell, ms), ikProgress)
+                 .joints;
     for (const JointPoint& p : joints.points) out.unreachableTargets += !p.reachable;
   }
   SubProgress writeProgress(progress, 0.7, 1.0, "writing the program");

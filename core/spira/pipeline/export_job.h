@@ -19,6 +19,7 @@ struct ExportJob {
   ParamSet exporterParams;
   PrepParams prep;
   const RobotCell* cell = nullptr;
+  bool optimiseSpin = true;  // layer-wise torch spin on the prepared points (plan_motion.h)
   std::map<std::string, std::string> header;
 };
 

@@ -1,11 +1,12 @@
 #include "spira/pipeline/plan_motion.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 
 #include "spira/base/units.h"
 #include "spira/collision/collision_resolver.h"
-#include "spira/kinematics/joint_path_solver.h"
+#include "spira/motion/motion_solver.h"
 #include "spira/robotcell/robot_collision_model.h"
 
 namespace spira {
@@ -28,29 +29,6 @@ nlohmann::json firstIndices(const std::vector<size_t>& indices)
   nlohmann::json a = nlohmann::json::array();
   for (size_t k = 0; k < std::min(indices.size(), kListedIndices); ++k) a.push_back(indices[k]);
   return a;
-}
-
-// Largest |dq| / dt over the axis speed limit, dt = segment length / travel speed of the move.
-double maxJointSpeedRatio(const JointTrajectory& joints, const Trajectory& path, std::string& axis)
-{
-  double worst = 0.0;
-  for (size_t i = 1; i < joints.size(); ++i) {
-    const double ts = path.points[i].travelSpeed;
-    const double len = (path.points[i].position - path.points[i - 1].position).norm();
-    if (ts <= 0.0 || len <= 0.0) continue;
-    const double dt = len / ts;
-    for (size_t k = 0; k < 6; ++k) {
-      const double r = std::abs(joints.points[i].robotDeg[k] - joints.points[i - 1].robotDeg[k]) / dt /
-                       joints.robotLimits[k].maxSpeedDegPerS;
-      if (r > worst) worst = r, axis = joints.robotLimits[k].name;
-    }
-    for (size_t k = 0; joints.hasPositioner && k < 2; ++k) {
-      const double r = std::abs(joints.points[i].externalDeg[k] - joints.points[i - 1].externalDeg[k]) / dt /
-                       joints.externalLimits[k].maxSpeedDegPerS;
-      if (r > worst) worst = r, axis = joints.externalLimits[k].name;
-    }
-  }
-  return worst;
 }
 
 struct LinkCheck {
@@ -88,7 +66,20 @@ LinkCheck checkRobotLinks(const RobotCell& cell, const JointPathSetup& setup, co
   return out;
 }
 
+nlohmann::json indexOrNull(size_t i)
+{
+  return i == MotionReport::kNone ? nlohmann::json(nullptr) : nlohmann::json(i);
+}
+
 }  // namespace
+
+MotionParams motionParamsFor(const RobotCell& cell, const MotionSettings& settings)
+{
+  MotionParams p;
+  p.optimiseSpin = settings.optimiseSpin;
+  p.cableTwistLimitDeg = cell.record().cableTwistLimitDeg;
+  return p;
+}
 
 PlanMotion solvePlanMotion(const RobotCell& cell, const Trajectory& plan, const MotionSettings& settings,
                            Progress& progress)
@@ -99,6 +90,12 @@ PlanMotion solvePlanMotion(const RobotCell& cell, const Trajectory& plan, const 
   CollisionScene scene;
   scene.setSubstratePlane(Vec3(0, 0, settings.substrateZ), Vec3::UnitZ());
   const TorchCollisionChecker checker(plan, torchOf(cell.record().tool), deposit, std::move(scene));
+  using Clock = std::chrono::steady_clock;
+  const auto seconds = [](Clock::time_point from) {
+    return std::chrono::duration<double>(Clock::now() - from).count();
+  };
+  auto lap = Clock::now();
+  nlohmann::json timings;
   SubProgress collisionProgress(progress, 0.0, 0.4, "torch collisions");
   CollisionResolution resolution =
       resolveTorchCollisions(plan, checker, ResolveSettings{}, collisionProgress);
@@ -109,10 +106,17 @@ PlanMotion solvePlanMotion(const RobotCell& cell, const Trajectory& plan, const 
   out.unresolvedCollisions = unresolved.size();
   out.trajectory = settings.resolveCollisions ? std::move(resolution.trajectory) : plan;
 
+  timings["torch_collisions"] = seconds(lap);
+  lap = Clock::now();
   SubProgress ikProgress(progress, 0.4, 0.8, "joint motion");
   const JointPathSetup setup = cell.seededSetup(out.trajectory);
-  out.joints = solveJointTrajectory(cell.ik(), cell.convention(), out.trajectory, setup, ikProgress);
+  MotionResult solved = solveMotion(cell.ik(), cell.convention(), out.trajectory, setup,
+                                    motionParamsFor(cell, settings), ikProgress);
+  out.joints = std::move(solved.joints);
+  const MotionReport& m = solved.report;
   for (size_t i : unresolved) out.joints.points[i].collision = true;
+  timings["joint_motion"] = seconds(lap);
+  lap = Clock::now();
   LinkCheck links;
   if (settings.part) {
     SubProgress linkProgress(progress, 0.8, 1.0, "robot links");
@@ -120,24 +124,12 @@ PlanMotion solvePlanMotion(const RobotCell& cell, const Trajectory& plan, const 
     for (size_t i : links.points) out.joints.points[i].collision = true;
     out.robotCollisions = links.points.size();
   }
+  timings["robot_links"] = seconds(lap);
 
-  std::vector<size_t> unreachable;
-  double minMargin = std::numeric_limits<double>::infinity(), minDexterity = 1.0, maxTwist = 0.0;
-  std::string marginAxis;
-  const auto& limits = out.joints.robotLimits;
-  for (size_t i = 0; i < out.joints.size(); ++i) {
-    const JointPoint& p = out.joints.points[i];
-    if (!p.reachable) unreachable.push_back(i);
-    for (size_t k = 0; k < 6; ++k) {
-      const double m = std::min(p.robotDeg[k] - limits[k].minDeg, limits[k].maxDeg - p.robotDeg[k]);
-      if (m < minMargin) minMargin = m, marginAxis = limits[k].name;
-    }
-    minDexterity = std::min(minDexterity, p.dexterity);
-    maxTwist = std::max(maxTwist, std::abs(p.robotDeg[3] + p.robotDeg[5]));
-  }
-  out.reachable = unreachable.empty();
-  std::string speedAxis;
-  const double speedRatio = maxJointSpeedRatio(out.joints, out.trajectory, speedAxis);
+  std::vector<size_t> unreachable = m.unreachable;
+  unreachable.insert(unreachable.end(), m.outsideLimits.begin(), m.outsideLimits.end());
+  std::sort(unreachable.begin(), unreachable.end());
+  out.reachable = m.reachable && unreachable.empty() && m.withinCableTwistLimit;
 
   nlohmann::json& r = out.report;
   r["cell"] = cell.record().name;
@@ -146,13 +138,17 @@ PlanMotion solvePlanMotion(const RobotCell& cell, const Trajectory& plan, const 
   r["unreachable_points"] = unreachable.size();
   r["unreachable_indices"] = firstIndices(unreachable);
   r["configuration"] = setup.configuration ? setup.configuration->label() : std::string();
-  r["min_joint_limit_margin_deg"] = out.joints.size() ? minMargin : 0.0;
-  r["min_joint_limit_margin_axis"] = marginAxis;
-  r["min_dexterity"] = minDexterity;
-  r["max_joint_speed_ratio"] = speedRatio;
-  r["max_joint_speed_axis"] = speedAxis;
-  r["max_cable_twist_deg"] = maxTwist;
+  r["min_joint_limit_margin_deg"] = std::isfinite(m.minLimitMarginDeg) ? m.minLimitMarginDeg : 0.0;
+  r["min_joint_limit_margin_axis"] = m.minLimitMarginAxis;
+  r["min_joint_limit_margin_point"] = indexOrNull(m.minLimitMarginPoint);
+  r["min_dexterity"] = m.minDexterity;
+  r["min_dexterity_point"] = indexOrNull(m.minDexterityPoint);
+  r["max_joint_speed_ratio"] = m.maxSpeedRatio;
+  r["max_joint_speed_axis"] = m.maxSpeedRatioAxis;
+  r["max_joint_speed_point"] = indexOrNull(m.maxSpeedRatioPoint);
+  r["max_cable_twist_deg"] = m.maxCableTwistDeg;
   r["cable_twist_limit_deg"] = cell.record().cableTwistLimitDeg;
+  r["within_cable_twist_limit"] = m.withinCableTwistLimit;
   r["collisions"] = unresolved.size();
   r["collision_indices"] = firstIndices(unresolved);
   r["collisions_detected"] = colliding.size();
@@ -162,8 +158,15 @@ PlanMotion solvePlanMotion(const RobotCell& cell, const Trajectory& plan, const 
   r["robot_collision_links"] = links.links;
   r["robot_points_checked"] = links.checked;
   r["cell_warnings"] = links.warnings;
-  r["optimisation"] = {
-      {"mode", "constant_spin"}, {"objective_before", nullptr}, {"objective_after", nullptr}};
+  r["optimisation"] = {{"enabled", settings.optimiseSpin},
+                       {"optimised", m.optimised},
+                       {"objective_before", m.objectiveConstant},
+                       {"penalty_before", m.penaltyConstant},
+                       {"objective_after", m.objectiveResult},
+                       {"penalty_after", m.penaltyResult},
+                       {"layers", m.layers.size()},
+                       {"poses_solved", m.posesSolved}};
+  r["kinematics_timings_s"] = timings;
   return out;
 }
 

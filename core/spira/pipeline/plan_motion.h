@@ -4,6 +4,7 @@
 
 #include "spira/base/progress.h"
 #include "spira/mesh/triangle_mesh.h"
+#include "spira/motion/motion_params.h"
 #include "spira/path/joint_trajectory.h"
 #include "spira/path/trajectory.h"
 #include "spira/robotcell/robot_cell.h"
@@ -20,7 +21,13 @@ struct MotionSettings {
   // plate under it and the positioner every `linkCheckSpacing` mm of path (and at both ends).
   const TriangleMesh* part = nullptr;
   double linkCheckSpacing = 10.0;
+  // Layer-wise optimisation of the torch spin (Chalvin ch. 4); off: the spin is held constant in
+  // the robot's base frame. The cable-twist limit is the cell's.
+  bool optimiseSpin = true;
 };
+
+// The motion parameters of a cell and these settings.
+MotionParams motionParamsFor(const RobotCell& cell, const MotionSettings& settings);
 
 // The robot side of a plan: the torch checked (and, when allowed, tilted) against the deposit so
 // far and the substrate, then every point solved on the cell.
