@@ -1,16 +1,20 @@
+#include <chrono>
 #include <iomanip>
 #include <iostream>
 #include <map>
+#include <optional>
 
 #include <nlohmann/json.hpp>
 
 #include "builtin_plugins.h"
 #include "cli_common.h"
 #include "part_loading.h"
+#include "spira/base/error.h"
 #include "spira/base/units.h"
 #include "spira/io/import_service.h"
 #include "spira/plugin/param_cli.h"
 #include "spira/plugin/plugin_registry.h"
+#include "spira/skeleton/mcf_skeleton.h"
 
 namespace spira::cli {
 namespace {
@@ -22,6 +26,79 @@ void printTiming(const ImportedPart& part, std::ostream& out)
       << " s\n";
 }
 
+// The --skeleton section: the curve skeleton, or why it could not be computed (the rest of the
+// report still stands).
+struct SkeletonSection {
+  std::optional<SkeletonResult> result;
+  std::string error, hint;
+  double seconds = 0.0;
+};
+
+SkeletonSection computeSkeletonSection(const TriangleMesh& mesh)
+{
+  SkeletonSection s;
+  NullProgress progress;
+  const auto t0 = std::chrono::steady_clock::now();
+  try {
+    s.result = computeCurveSkeleton(mesh, SkeletonOptions{}, progress);
+  } catch (const Error& e) {
+    s.error = e.what();
+    s.hint = e.hint();
+  }
+  s.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return s;
+}
+
+nlohmann::json pointJson(const Vec3& p)
+{
+  return nlohmann::json::array({p.x(), p.y(), p.z()});
+}
+
+nlohmann::json skeletonJson(const SkeletonSection& s)
+{
+  if (!s.result) return {{"error", s.error}, {"hint", s.hint}};
+  const CurveSkeleton& k = s.result->skeleton;
+  nlohmann::json j;
+  j["branch_count"] = k.branchCount();
+  j["branch_points"] = nlohmann::json::array();
+  for (const Vec3& p : k.branchPoints) j["branch_points"].push_back(pointJson(p));
+  j["end_points"] = nlohmann::json::array();
+  for (const Vec3& p : k.endPoints) j["end_points"].push_back(pointJson(p));
+  j["loops"] = k.loops;
+  j["mono_branch"] = k.monoBranch();
+  j["monotone_in_z"] = k.monotoneInZ;
+  j["branches"] = nlohmann::json::array();
+  for (const Polyline& b : k.branches) {
+    nlohmann::json line = nlohmann::json::array();
+    for (const Vec3& p : b) line.push_back(pointJson(p));
+    j["branches"].push_back(line);
+  }
+  j["nodes"] = k.graph.nodes.size();
+  j["contraction_steps"] = s.result->iterations;
+  j["converged"] = s.result->converged;
+  j["free_edges_capped"] = s.result->capsAdded;
+  j["warnings"] = s.result->warnings;
+  return j;
+}
+
+void printSkeleton(const SkeletonSection& s, std::ostream& out)
+{
+  if (!s.result) {
+    out << "skeleton: not computed: " << s.error << "\n";
+    if (!s.hint.empty()) out << "  hint: " << s.hint << "\n";
+    return;
+  }
+  const CurveSkeleton& k = s.result->skeleton;
+  out << std::setprecision(3) << std::fixed;
+  out << "skeleton: " << k.branchCount() << " branch(es), " << k.branchPoints.size() << " branch point(s), "
+      << k.loops << " loop(s), monotone in z: " << (k.monotoneInZ ? "yes" : "no") << " ("
+      << (k.monoBranch() ? "mono-branch" : "multi-branch") << "; " << k.graph.nodes.size() << " nodes, "
+      << s.result->iterations << " contraction steps, " << s.result->capsAdded << " free edge(s) capped)\n";
+  for (const Vec3& p : k.branchPoints)
+    out << "  branch point at (" << p.x() << ", " << p.y() << ", " << p.z() << ") mm\n";
+  for (const auto& w : s.result->warnings) out << "warning: " << w << "\n";
+}
+
 }  // namespace
 
 int cmdInfo(const std::vector<std::string>& argv)
@@ -31,21 +108,26 @@ int cmdInfo(const std::vector<std::string>& argv)
   Args args = splitArgs(argv);
   if (args.takeSwitch("--help")) {
     std::cout
-        << "usage: spira-cli info PART [--json] [--timing] [importer flags]\n\n"
+        << "usage: spira-cli info PART [--json] [--timing] [--skeleton] [importer flags]\n\n"
            "Imports PART (welded and validated as in the GUI) and prints mesh statistics, validation\n"
            "findings with positions, boundary loops (count, length, z-range), connected components and\n"
            "the open/closed classification. --json prints the same as JSON; --timing adds stage times.\n"
+           "--skeleton adds the part's mean curvature flow curve skeleton: branch count, branch points,\n"
+           "loops and whether it rises monotonically in z (free edges are capped for the computation).\n"
         << paramFlagsHelp(flags.targets());
     return kOk;
   }
   const bool json = args.takeSwitch("--json");
   const bool timing = args.takeSwitch("--timing");
+  const bool skeleton = args.takeSwitch("--skeleton");
   args.rest = consumeParamFlags(args.rest, flags.targets());
   const auto positional = args.finish("info", 1, 1);
   const std::string& file = positional[0];
 
   NullProgress progress;
   const ImportedPart part = flags.import(file, progress);
+  const std::optional<SkeletonSection> skeletonSection =
+      skeleton ? std::optional<SkeletonSection>(computeSkeletonSection(part.mesh)) : std::nullopt;
 
   if (json) {
     nlohmann::json j = part.report.toJson();
@@ -61,6 +143,10 @@ int cmdInfo(const std::vector<std::string>& argv)
                         {"weld", part.seconds.weld},
                         {"validate", part.seconds.validate},
                         {"total", part.seconds.total()}};
+    if (skeletonSection) {
+      j["skeleton"] = skeletonJson(*skeletonSection);
+      if (timing) j["timings_s"]["skeleton"] = skeletonSection->seconds;
+    }
     std::cout << j.dump(2) << "\n";
     return kOk;
   }
@@ -70,7 +156,9 @@ int cmdInfo(const std::vector<std::string>& argv)
             << " vertices (tolerance " << part.weld.tolerance << " mm)\n";
   std::cout << part.report.toText();
   for (const auto& w : part.warnings) std::cout << "warning: " << w << "\n";
+  if (skeletonSection) printSkeleton(*skeletonSection, std::cout);
   if (timing) printTiming(part, std::cout);
+  if (timing && skeletonSection) std::cout << "timing: skeleton " << skeletonSection->seconds << " s\n";
   return kOk;
 }
 

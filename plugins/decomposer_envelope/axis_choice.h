@@ -1,0 +1,38 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "projection_axis.h"
+#include "spira/base/progress.h"
+#include "spira/mesh/boundary_loops.h"
+#include "spira/mesh/triangle_mesh.h"
+
+namespace spira {
+
+enum class AxisMode {
+  Auto,      // the skeleton; the vertical line through the base centroid when the skeleton runs along it
+  Skeleton,  // the skeleton's chain as it is
+  Vertical,  // the vertical line through the base centroid, no skeleton computed (fast)
+};
+
+struct AxisChoice {
+  ProjectionAxis axis = ProjectionAxis::vertical(Vec3::Zero());
+  std::string source;  // in words, for warnings and reports
+  std::vector<std::string> warnings;
+};
+
+// Centroid of the loop's polygon (edge midpoints weighted by edge length: uneven vertex spacing
+// does not pull it sideways).
+Vec3 loopCentroid(const TriangleMesh& mesh, const BoundaryLoop& loop);
+
+// The axis the envelope points are projected towards. With a skeleton (Auto, Skeleton) the part
+// must be mono-branch with a skeleton rising steadily in z, else InputError says so and points
+// to the iso-value strategy. Auto uses the exact vertical line through the base centroid when
+// every skeleton node lies within 5 % of the base radius of it (a part of revolution standing
+// upright: the line is truer than the skeleton's nodes), the straight line through the skeleton's
+// ends when the nodes lie that close to it, and the skeleton's chain otherwise.
+AxisChoice chooseProjectionAxis(const TriangleMesh& mesh, const BoundaryLoop& lower, AxisMode mode,
+                                Progress& progress);
+
+}  // namespace spira

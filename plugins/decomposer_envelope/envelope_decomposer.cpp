@@ -1,0 +1,151 @@
+#include "envelope_decomposer.h"
+
+#include <memory>
+
+#include "axis_choice.h"
+#include "envelope_projection.h"
+#include "spira/base/error.h"
+#include "spira/plugin/plugin_registry.h"
+
+namespace spira {
+
+namespace {
+
+ParamSchema makeSchema()
+{
+  std::vector<ParamDef> defs;
+  {
+    ParamDef d;
+    d.key = "points_per_rev";
+    d.type = ParamType::Int;
+    d.defaultValue = std::int64_t{360};
+    d.min = 8;
+    d.max = 20000;
+    d.label = "Points per revolution";
+    d.tooltip =
+        "Number of envelope generatrices, i.e. path points per revolution, spread evenly in angle "
+        "around the part's axis.";
+    d.category = "Discretisation";
+    defs.push_back(d);
+  }
+  {
+    ParamDef d;
+    d.key = "point_spacing";
+    d.type = ParamType::Double;
+    d.defaultValue = 0.0;
+    d.min = 0.0;
+    d.max = 1000.0;
+    d.unit = "mm";
+    d.label = "Point spacing";
+    d.tooltip =
+        "Mean distance between consecutive points of a generatrix. 0 uses the mesh's mean edge "
+        "length, the finest spacing the mesh resolves.";
+    d.category = "Discretisation";
+    defs.push_back(d);
+  }
+  {
+    ParamDef d;
+    d.key = "axis";
+    d.type = ParamType::Choice;
+    d.defaultValue = std::string("auto");
+    d.choices = {"auto", "skeleton", "vertical"};
+    d.label = "Projection axis";
+    d.tooltip =
+        "What the envelope is projected towards. auto: the part's curve skeleton, or the vertical "
+        "axis through the base centroid when the skeleton runs along it; skeleton: always the "
+        "skeleton; vertical: the vertical axis through the base centroid, no skeleton (fastest, for "
+        "upright parts of revolution).";
+    d.category = "Projection";
+    defs.push_back(d);
+  }
+  {
+    ParamDef d;
+    d.key = "start_angle";
+    d.type = ParamType::Double;
+    d.defaultValue = 0.0;
+    d.min = -360.0;
+    d.max = 360.0;
+    d.unit = "deg";
+    d.label = "Start angle";
+    d.tooltip =
+        "Angle about the axis of the first generatrix, where the spiral starts: 0 is +X, counted "
+        "counter-clockwise seen from above.";
+    d.category = "Projection";
+    defs.push_back(d);
+  }
+  return ParamSchema(std::move(defs));
+}
+
+bool canPlan(const DecomposeInput& input, std::string* why)
+{
+  auto no = [&](const std::string& reason) {
+    if (why) *why = reason;
+    return false;
+  };
+  if (input.partClass == PartClass::Closed)
+    return no(
+        "envelope projection plans open parts only (two free edges); use decomposer.isovalue for "
+        "closed parts");
+  if (input.partClass != PartClass::Open)
+    return no("the part is not open: it needs exactly two free edges, one on the substrate and one on top");
+  if (!input.upper || input.upper->vertices.size() < 3) return no("the open part has no upper edge");
+  if (input.lower.vertices.size() < 3) return no("the part has no lower edge");
+  return true;
+}
+
+AxisMode axisMode(const std::string& value)
+{
+  if (value == "skeleton") return AxisMode::Skeleton;
+  if (value == "vertical") return AxisMode::Vertical;
+  return AxisMode::Auto;
+}
+
+}  // namespace
+
+EnvelopeDecomposer::EnvelopeDecomposer() : schema_(makeSchema()) {}
+
+std::string EnvelopeDecomposer::description() const
+{
+  return "Envelope generatrices on a cylinder around the part, projected horizontally onto it towards the "
+         "skeleton point at the same height. Open parts without overhangs only.";
+}
+
+bool EnvelopeDecomposer::accepts(const DecomposeInput& input, std::string* why) const
+{
+  return canPlan(input, why);
+}
+
+DecomposeResult EnvelopeDecomposer::decompose(const DecomposeInput& input, const ParamSet& params,
+                                              Progress& progress) const
+{
+  std::string why;
+  if (!canPlan(input, &why))
+    throw InputError("decomposer.envelope_projection cannot plan this part: " + why,
+                     "choose the iso-value strategy (decomposer.isovalue)");
+  const ParamSet values = params.withDefaults(schema_);
+  schema_.validate(values);
+  EnvelopeOptions options;
+  options.generatrixCount = static_cast<size_t>(values.getInt("points_per_rev"));
+  options.pointSpacing = values.internal(schema_, "point_spacing");
+  options.startAngle = values.internal(schema_, "start_angle");
+  const AxisMode mode = axisMode(values.getString("axis"));
+
+  SubProgress axisProgress(progress, 0.0, mode == AxisMode::Vertical ? 0.0 : 0.4, "skeleton");
+  const AxisChoice axis = chooseProjectionAxis(input.mesh, input.lower, mode, axisProgress);
+  SubProgress projectionProgress(progress, mode == AxisMode::Vertical ? 0.0 : 0.4, 1.0,
+                                 "envelope projection");
+  EnvelopeDecomposition d = decomposeByEnvelopeProjection(input.mesh, input.lower, *input.upper, axis.axis,
+                                                          options, projectionProgress);
+  DecomposeResult out;
+  out.generatrices = std::move(d.generatrices);
+  out.warnings = axis.warnings;
+  out.warnings.insert(out.warnings.end(), d.warnings.begin(), d.warnings.end());
+  return out;
+}
+
+}  // namespace spira
+
+void spira_register_decomposer_envelope(spira::PluginRegistry& registry)
+{
+  registry.add(std::make_unique<spira::EnvelopeDecomposer>());
+}
