@@ -1,0 +1,238 @@
+#include "geodesic_decomposition.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <sstream>
+
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+
+#include "base_ring.h"
+#include "coverage.h"
+#include "generatrix_solver.h"
+#include "spira/base/error.h"
+#include "spira/field/heat_distance.h"
+#include "surface_locator.h"
+
+namespace spira::geodesic {
+
+namespace {
+
+constexpr size_t kBatch = 32;  // generatrices between progress reports
+
+std::string num(double v, int precision = 3)
+{
+  std::ostringstream s;
+  s.precision(precision);
+  s << v;
+  return s.str();
+}
+
+double secondsSince(std::chrono::steady_clock::time_point t0)
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+SurfacePoint pointAtVertex(const GeodesicMesh& gm, int v)
+{
+  const int corner = *gm.cornersBegin(v);
+  Vec3 bary = Vec3::Zero();
+  bary[corner % 3] = 1.0;
+  return gm.pointOn(corner / 3, bary);
+}
+
+// The closed part's closure point: the finder's, or the vertex farthest from the base.
+SurfacePoint findClosure(const GeodesicMesh& gm, const SurfaceLocator& locator, HeatDistanceSolver& heat,
+                         const BoundaryLoop& lower, const std::optional<Vec3>& closurePoint,
+                         const std::vector<double>* baseDistance, Progress& progress)
+{
+  if (closurePoint) return locator.closest(*closurePoint);
+  std::vector<double> computed;
+  if (!baseDistance || baseDistance->size() != gm.mesh().vertexCount()) {
+    computed = heat.compute(lower.vertices, progress);
+    baseDistance = &computed;
+  }
+  int far = -1;
+  for (size_t v = 0; v < baseDistance->size(); ++v) {
+    const double d = (*baseDistance)[v];
+    if (std::isfinite(d) && gm.cornersBegin(int(v)) != gm.cornersEnd(int(v)) &&
+        (far < 0 || d > (*baseDistance)[size_t(far)]))
+      far = int(v);
+  }
+  if (far < 0) throw InputError("the part has no vertex reachable from its lower edge", "repair the mesh");
+  return pointAtVertex(gm, far);
+}
+
+GeneratrixLine lineFromPath(const GeodesicMesh& gm, const SolvedGeneratrix& s, const BasePoint& base)
+{
+  GeneratrixLine line;
+  line.angle = base.angle;
+  line.exactLength = s.path.length;
+  line.points.reserve(s.path.points.size());
+  line.normals.reserve(s.path.points.size());
+  for (const PathPoint& p : s.path.points) {
+    line.points.push_back(p.position);
+    line.normals.push_back(gm.normalAt(p.vertices.data(), p.weights, 3));
+  }
+  // The path's own ends may sit a rounding error away (see SubmeshGeodesics): use the exact ones,
+  // so every line starts on the lower edge and, on closed parts, ends on the very same point.
+  line.points.front() = base.point.position;
+  line.points.back() = s.end.position;
+  return line;
+}
+
+}  // namespace
+
+GeodesicDecomposition decomposeByGeodesics(const TriangleMesh& mesh, const BoundaryLoop& lower,
+                                           const BoundaryLoop* upper, const std::optional<Vec3>& closurePoint,
+                                           const std::vector<double>* baseDistance,
+                                           const GeodesicOptions& options, Progress& progress)
+{
+  const size_t n = options.pointsPerRevolution;
+  if (n < 3)
+    throw InputError("the generatrix count must be at least 3, not " + std::to_string(n),
+                     "raise points_per_rev");
+  if (upper && upper->vertices.size() < 3)
+    throw InputError("the upper edge has fewer than 3 vertices", "repair the mesh");
+  GeodesicDecomposition out;
+  GeodesicStats& stats = out.stats;
+  auto t0 = std::chrono::steady_clock::now();
+
+  // Set-up: connectivity, the base, the target and an approximate distance to it (the guide).
+  const GeodesicMesh gm(mesh);
+  const BaseRing ring(gm, lower);
+  const SurfaceLocator locator(mesh);
+  SubProgress setupProgress(progress, 0.0, 0.1, "guide field");
+  HeatDistanceSolver heat(mesh, HeatDistanceOptions{}, setupProgress);
+  GeodesicTarget target;
+  std::vector<int> guideSources;
+  if (upper) {
+    target.upper = upper;
+    target.upperIndex.assign(mesh.vertexCount(), -1);
+    target.upperVertex.assign(mesh.vertexCount(), 0);
+    for (size_t i = 0; i < upper->vertices.size(); ++i) {
+      target.upperIndex[size_t(upper->vertices[i])] = int(i);
+      target.upperVertex[size_t(upper->vertices[i])] = 1;
+    }
+    guideSources = upper->vertices;
+  } else {
+    SubProgress closureProgress(progress, 0.1, 0.15, "closure point");
+    target.closure = findClosure(gm, locator, heat, lower, closurePoint, baseDistance, closureProgress);
+    const Face& cf = mesh.faces[size_t(target.closure.face)];
+    int k = 0;
+    for (int j = 1; j < 3; ++j)
+      if (target.closure.bary[j] > target.closure.bary[k]) k = j;
+    target.closureVertex = cf[size_t(k)];
+    guideSources = {target.closureVertex};
+  }
+  SubProgress guideProgress(progress, 0.15, 0.2, "guide field");
+  const std::vector<double> guide = heat.compute(guideSources, guideProgress);
+
+  size_t ambiguous = 0;
+  const std::vector<BasePoint> bases = ring.discretise(n, &ambiguous);
+  for (const BasePoint& b : bases)
+    for (int v : mesh.faces[size_t(b.point.face)])
+      if (!std::isfinite(guide[size_t(v)])) {
+        std::ostringstream where;
+        where.precision(4);
+        where << "(" << b.point.position.x() << ", " << b.point.position.y() << ", " << b.point.position.z()
+              << ")";
+        throw InputError("no path on the surface joins the base point at " + where.str() + " to the " +
+                             (upper ? "upper edge" : "closure point"),
+                         "the part must be one connected surface from its lower edge to its top: check the "
+                         "mesh for gaps or separate pieces");
+      }
+  stats.guideSeconds = secondsSince(t0);
+  progress.report(0.2, "geodesics");
+
+  // The exact geodesics, in parallel: each thread keeps its own band scratch, each search its own
+  // shortest-path tree over the shared, read-only mesh.
+  t0 = std::chrono::steady_clock::now();
+  const GeneratrixSolver solver(gm, guide, target);
+  tbb::enumerable_thread_specific<Corridor> bands([&gm] { return Corridor(gm); });
+  std::vector<SolvedGeneratrix> solved(n);
+  for (size_t begin = 0; begin < n; begin += kBatch) {
+    const size_t end = std::min(n, begin + kBatch);
+    tbb::parallel_for(begin, end, [&](size_t i) {
+      progress.checkCancel();
+      solved[i] = solver.solve(bases[i].point, bands.local(), progress);
+    });
+    progress.checkCancel();
+    progress.report(0.2 + 0.65 * double(end) / double(n), "geodesics");
+  }
+  stats.geodesics = n;
+  double bandFaces = 0.0, meanLength = 0.0;
+  for (const SolvedGeneratrix& s : solved) {
+    stats.untraced += s.traced ? 0 : 1;
+    stats.widened += s.rings > 1 || s.rings < 0 ? 1 : 0;
+    stats.wholeMesh += s.rings < 0 ? 1 : 0;
+    bandFaces += double(s.bandFaces);
+    meanLength += s.path.length;
+  }
+  stats.meanBandFaces = bandFaces / double(n);
+  meanLength /= double(n);
+  stats.pathSeconds = secondsSince(t0);
+
+  // One point count for all: the spacing asked for along the mean generatrix.
+  t0 = std::chrono::steady_clock::now();
+  const double spacing = options.pointSpacing > 0.0 ? options.pointSpacing : gm.meanEdgeLength();
+  const double steps = spacing > 0.0 ? std::round(meanLength / spacing) : 2.0;
+  const size_t samples = size_t(std::clamp(steps, 2.0, 100000.0)) + 1;
+  std::vector<GeneratrixLine> lines(n);
+  tbb::parallel_for(size_t(0), n, [&](size_t i) {
+    lines[i] = resampleLine(lineFromPath(gm, solved[i], bases[i]), samples);
+  });
+  solved.clear();
+
+  FillInContext context{gm, locator, ring, upper, std::nullopt, samples};
+  if (!upper) context.closure = target.closure;
+  SubProgress coverageProgress(progress, 0.85, 1.0, "coverage");
+  CoverageResult coverage =
+      fillCoverageGaps(std::move(lines), context, options.coverageTolerance, options.fillRounds,
+                       options.maxLinesFactor * n, coverageProgress);
+  stats.fillIns = coverage.fillIns;
+  stats.fillRounds = coverage.rounds;
+  stats.coverageError = coverage.maxError;
+  stats.coverageSeconds = secondsSince(t0);
+
+  if (ambiguous)
+    out.warnings.push_back(
+        "the lower edge is not star-shaped about its centroid: at " + std::to_string(ambiguous) + " of " +
+        std::to_string(n) +
+        " angles the vertical half-plane crosses it several times and the outermost crossing "
+        "was used; the generatrices there may start out of order");
+  if (coverage.fillIns)
+    out.warnings.push_back("coverage (thesis Eq. 3.9): " + std::to_string(coverage.fillIns) +
+                           " fill-in generatrices were inserted in " + std::to_string(coverage.rounds) +
+                           " round(s) where neighbouring geodesics left the surface uncovered by more than " +
+                           num(options.coverageTolerance) + " mm");
+  if (!coverage.converged)
+    out.warnings.push_back("coverage error " + num(coverage.maxError) + " mm remains between generatrices " +
+                           std::to_string(coverage.worstPair) + " and " +
+                           std::to_string((coverage.worstPair + 1) % coverage.lines.size()) + " (tolerance " +
+                           num(options.coverageTolerance) +
+                           " mm): raise points_per_rev or fill_rounds, or use decomposer.isovalue");
+
+  Generatrices& g = out.generatrices;
+  const size_t count = coverage.lines.size();
+  g.lines.resize(count);
+  g.normals.resize(count);
+  out.fillIn.resize(count);
+  out.exactLengths.resize(count);
+  for (size_t i = 0; i < count; ++i) {
+    GeneratrixLine& l = coverage.lines[i];
+    out.fillIn[i] = l.fillIn;
+    out.exactLengths[i] = l.fillIn ? l.length() : l.exactLength;
+    g.lines[i] = std::move(l.points);
+    g.normals[i] = std::move(l.normals);
+  }
+  if (!upper) {
+    g.hasClosurePoint = true;
+    g.closurePoint = target.closure.position;
+  }
+  progress.report(1.0, "generatrices");
+  return out;
+}
+
+}  // namespace spira::geodesic
