@@ -1,0 +1,97 @@
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <regex>
+#include <set>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "cli_runner.h"
+#include "support/test_support.h"
+
+namespace fs = std::filesystem;
+
+namespace spira::test {
+namespace {
+
+fs::path resource(const std::string& sub)
+{
+  return sourceDir() / "resources" / sub;
+}
+
+std::string slurp(const fs::path& file)
+{
+  std::ifstream in(file, std::ios::binary);
+  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+
+size_t count(const std::string& text, const std::string& what)
+{
+  size_t n = 0;
+  for (size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+  return n;
+}
+
+// The whole chain on the KUKA table cell: plan, solve, prepare and write KRL; then the FANUC program
+// of the same plan folder with `export`.
+TEST(CliExport, CylinderOnTheKukaCellGivesOneArcOnAndOneArcOff)
+{
+  TempDir dir;
+  const CliRun r = runCli({"plan", resource("samples/open_cylinder.stl").string(), "-o", dir.path().string(),
+                           "--cell", resource("cells/kuka_kr16_2_table.cell").string(), "--points-per-rev",
+                           "120", "--export", "krl", "--program-name", "wall1"});
+  ASSERT_EQ(r.exitCode, 0) << r.err << r.out;
+  const std::string src = slurp(dir / "wall1.src");
+  const std::string dat = slurp(dir / "wall1.dat");
+  ASSERT_FALSE(src.empty());
+  EXPECT_NE(src.find("DEF wall1( )"), std::string::npos);
+  EXPECT_NE(src.find("; part: open_cylinder.stl"), std::string::npos);
+  EXPECT_NE(src.find("; cell: KUKA KR 16-2 on a fixed table"), std::string::npos);
+  EXPECT_EQ(count(src, "$OUT[1]=TRUE"), 1u);
+  EXPECT_EQ(count(src, "$OUT[1]=FALSE"), 1u);
+  EXPECT_NE(dat.find("DEFDAT wall1"), std::string::npos);
+  // Every LIN target is declared, with the same S bits (one configuration for the whole path).
+  std::set<std::string> status;
+  const std::regex decl("DECL E6POS XP[0-9]+=\\{[^}]*S ([0-9]+),T");
+  for (auto it = std::sregex_iterator(dat.begin(), dat.end(), decl); it != std::sregex_iterator(); ++it)
+    status.insert((*it)[1]);
+  EXPECT_EQ(status.size(), 1u);
+  EXPECT_EQ(count(src, "LIN XP"), count(dat, "DECL E6POS XP"));
+
+  const fs::path tp = dir / "tp";
+  const CliRun e = runCli({"export", dir.path().string(), "--format", "fanuc_tp", "-o", tp.string(), "--cell",
+                           resource("cells/fanuc_m20ia_positioner.cell").string()});
+  ASSERT_EQ(e.exitCode, 0) << e.err << e.out;
+  bool found = false;
+  for (const auto& f : fs::directory_iterator(tp)) {
+    if (f.path().extension() != ".ls") continue;
+    found = true;
+    const std::string ls = slurp(f.path());
+    EXPECT_EQ(count(ls, ":  Arc Start["), 1u);  // instructions, not the header comment
+    EXPECT_EQ(count(ls, ":  Arc End["), 1u);
+    std::smatch m;
+    ASSERT_TRUE(std::regex_search(ls, m, std::regex("LINE_COUNT\\s*=\\s*([0-9]+);")));
+    const size_t mn = ls.find("/MN"), pos = ls.find("/POS");
+    std::istringstream body(ls.substr(mn, pos - mn));
+    size_t lines = 0;
+    for (std::string line; std::getline(body, line);)
+      lines += std::regex_search(line, std::regex("^\\s*[0-9]+:"));
+    EXPECT_EQ(std::stoul(m[1].str()), lines);
+  }
+  EXPECT_TRUE(found);
+}
+
+TEST(CliExport, UnknownFormatsAndMissingPlansAreRefused)
+{
+  TempDir dir;
+  EXPECT_EQ(runCli({"export", dir.path().string(), "--format", "abb", "-o", (dir / "x").string()}).exitCode,
+            2);
+  const CliRun noPlan =
+      runCli({"export", dir.path().string(), "--format", "krl", "-o", (dir / "x").string()});
+  EXPECT_EQ(noPlan.exitCode, 3) << noPlan.err;
+  EXPECT_NE(noPlan.err.find("trajectory.csv"), std::string::npos) << noPlan.err;
+}
+
+}  // namespace
+}  // namespace spira::test
