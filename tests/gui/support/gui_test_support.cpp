@@ -3,14 +3,20 @@
 #include <cstdlib>
 #include <set>
 
+#include <QAction>
 #include <QApplication>
+#include <QDir>
+#include <QElapsedTimer>
 #include <QSignalSpy>
 #include <QTest>
+
+#include <gtest/gtest.h>
 
 #include "spira/io/mesh_writers.h"
 #include "spira/mesh/mesh_primitives.h"
 #include "spira/ui/main_window.h"
 #include "spira/ui/scene_view.h"
+#include "support/test_support.h"
 
 namespace spira::test {
 
@@ -64,6 +70,39 @@ double meanDifference(const QImage& a, const QImage& b, const QRect& rect)
     }
   }
   return sum / (3.0 * r.width() * r.height());
+}
+
+QRect rectIn(spira::ui::MainWindow& window, const QWidget* widget)
+{
+  return QRect(widget->mapTo(&window, QPoint(0, 0)), widget->size());
+}
+
+QString saveDocScreenshot(const QImage& image, const QString& name)
+{
+  QString dir = qEnvironmentVariable("SPIRA_SCREENSHOT_DIR");
+  if (dir.isEmpty()) dir = qpath(sourceDir() / "docs" / "screenshots");
+  QDir().mkpath(dir);
+  const QString file = QDir(dir).filePath(name);
+  if (!image.save(file)) ADD_FAILURE() << "cannot write " << file.toStdString();
+  return file;
+}
+
+bool waitFor(const std::function<bool()>& done, int ms)
+{
+  QElapsedTimer timer;
+  timer.start();
+  while (!done() && timer.elapsed() < ms) QApplication::processEvents(QEventLoop::AllEvents, 10);
+  return done();
+}
+
+bool planAndWait(spira::ui::MainWindow& window, int ms)
+{
+  bool finished = false;
+  const auto c = QObject::connect(&window, &spira::ui::MainWindow::planFinished, [&] { finished = true; });
+  window.actions().plan->trigger();
+  const bool ok = waitFor([&] { return finished; }, ms);
+  QObject::disconnect(c);
+  return ok;
 }
 
 QRect sceneRect(spira::ui::MainWindow& window)

@@ -1,10 +1,13 @@
 #pragma once
 
 #include <filesystem>
+#include <functional>
 
 #include <QImage>
 #include <QRect>
 #include <QString>
+
+class QWidget;
 
 namespace spira::ui {
 class MainWindow;
@@ -32,5 +35,18 @@ int distinctColours(const QImage& image, const QRect& rect);
 double meanDifference(const QImage& a, const QImage& b, const QRect& rect);
 // The 3D view's rectangle inside the window image.
 QRect sceneRect(spira::ui::MainWindow& window);
+// The rectangle of `widget` inside its window's image.
+QRect rectIn(spira::ui::MainWindow& window, const QWidget* widget);
+
+// Where documentation screenshots go: $SPIRA_SCREENSHOT_DIR, or docs/screenshots in the source
+// tree. Saves `image` there as `name` (overwriting) and returns the file.
+QString saveDocScreenshot(const QImage& image, const QString& name);
+
+// Runs the event loop until `done` holds or `ms` milliseconds have passed; returns done().
+bool waitFor(const std::function<bool()>& done, int ms);
+
+// Plans through the window's Plan action and waits for the outcome (status of the TaskOutcome).
+// Returns false when no outcome came within `ms`.
+bool planAndWait(spira::ui::MainWindow& window, int ms = 240000);
 
 }  // namespace spira::test

@@ -72,6 +72,16 @@ Actions Actions::create(QMainWindow* w, const QList<QAction*>& panelToggles)
   a.viewSide = make(w, QObject::tr("&Side View"), QObject::tr("Look along -X"), {QKeySequence(Qt::Key_3)});
   a.fitView =
       make(w, QObject::tr("&Fit to View"), QObject::tr("Frame the whole part"), {QKeySequence(Qt::Key_F)});
+  a.plan =
+      make(w, QObject::tr("&Plan"), QObject::tr("Plan the spiral on the part with the current settings (F5)"),
+           {QKeySequence(Qt::Key_F5)});
+  a.plan->setIcon(st->standardIcon(QStyle::SP_MediaPlay));
+  a.plan->setObjectName(QStringLiteral("planAction"));
+  a.cancelPlan = make(w, QObject::tr("&Cancel Planning"),
+                      QObject::tr("Stop the running plan; the previous results stay (Esc)"),
+                      {QKeySequence(Qt::Key_Escape)});
+  a.cancelPlan->setIcon(st->standardIcon(QStyle::SP_BrowserStop));
+  a.cancelPlan->setEnabled(false);
   a.about = make(w, QObject::tr("&About Spira"), QObject::tr("Version and licence"));
   a.about->setMenuRole(QAction::AboutRole);
   a.aboutQt = make(w, QObject::tr("About &Qt"), QObject::tr("Qt version and licence"));
@@ -107,6 +117,10 @@ Actions Actions::create(QMainWindow* w, const QList<QAction*>& panelToggles)
   view->addSeparator();
   for (QAction* t : panelToggles) view->addAction(t);
 
+  QMenu* planMenu = bar->addMenu(QObject::tr("&Plan"));
+  planMenu->addAction(a.plan);
+  planMenu->addAction(a.cancelPlan);
+
   QMenu* help = bar->addMenu(QObject::tr("&Help"));
   help->addAction(a.about);
   help->addAction(a.aboutQt);
@@ -120,6 +134,8 @@ Actions Actions::create(QMainWindow* w, const QList<QAction*>& panelToggles)
   tools->addSeparator();
   tools->addAction(a.undo);
   tools->addAction(a.redo);
+  tools->addSeparator();
+  tools->addAction(a.plan);
   QToolBar* viewBar = w->addToolBar(QObject::tr("View"));
   viewBar->setObjectName("viewToolBar");
   viewBar->setToolButtonStyle(Qt::ToolButtonTextOnly);

@@ -27,6 +27,8 @@ struct Actions {
   QAction* viewTop = nullptr;
   QAction* viewSide = nullptr;
   QAction* fitView = nullptr;
+  QAction* plan = nullptr;
+  QAction* cancelPlan = nullptr;
   QAction* about = nullptr;
   QAction* aboutQt = nullptr;
   QMenu* recentMenu = nullptr;  // filled by RecentFiles

@@ -123,6 +123,7 @@ void fillSettings(QTreeWidget* tree, const Document& doc)
   addRow(top, QObject::tr("Decomposer"), QString::fromStdString(s.decomposerId));
   addRow(top, QObject::tr("Closure finder"), QString::fromStdString(s.closureFinderId));
   for (const auto& [section, values] : s.params) {
+    if (values.values().empty()) continue;  // reset to defaults
     addRow(top, QString::fromStdString(section),
            QObject::tr("%n value(s) set", nullptr, static_cast<int>(values.values().size())));
   }

@@ -11,16 +11,22 @@
 #include <QMimeData>
 #include <QSettings>
 #include <QStatusBar>
+#include <QTimer>
 #include <QUrl>
 
 #include <vtkVersion.h>
 
+#include "builtin_plugins.h"
 #include "spira/base/version.h"
 #include "spira/ui/application.h"
+#include "spira/ui/display_panel.h"
 #include "spira/ui/document_tree.h"
 #include "spira/ui/log_panel.h"
+#include "spira/ui/plan_panel.h"
+#include "spira/ui/process_chart.h"
 #include "spira/ui/recent_files.h"
 #include "spira/ui/scene_view.h"
+#include "spira/ui/stage_progress.h"
 #include "spira/ui/task_runner.h"
 
 namespace spira::ui {
@@ -55,14 +61,48 @@ MainWindow::MainWindow(Document& doc, MainWindowOptions options, QWidget* parent
 
   log_ = new LogPanel(this);
   addDockWidget(Qt::BottomDockWidgetArea, log_);
-  // The tree is the taller companion of the view; the log takes only the bottom strip.
-  setCorner(Qt::BottomLeftCorner, Qt::LeftDockWidgetArea);
-  resizeDocks({treeDock_}, {340}, Qt::Horizontal);
-  resizeDocks({log_}, {150}, Qt::Vertical);
+  chart_ = new ProcessChart(this);
+  chartDock_ = new QDockWidget(tr("Process Chart"), this);
+  chartDock_->setObjectName("chartDock");
+  chartDock_->setWidget(chart_);
+  addDockWidget(Qt::BottomDockWidgetArea, chartDock_);
+  tabifyDockWidget(log_, chartDock_);
+  chartDock_->hide();
+  QAction* chartToggle = chartDock_->toggleViewAction();
+  chartToggle->setText(tr("Process &Chart"));
+  chartToggle->setToolTip(tr("Deposit height, travel speed and wire feed along the path"));
+  chartToggle->setShortcut(QKeySequence(Qt::Key_C));
+  // Shown, the chart comes to the front of its tab group with room for its three rows.
+  connect(chartToggle, &QAction::toggled, this, [this](bool on) {
+    if (!on) return;
+    // After the dock layout has placed the newly shown dock in its tab group.
+    QTimer::singleShot(0, this, [this] {
+      chartDock_->raise();
+      if (chartDock_->height() < 280) resizeDocks({chartDock_}, {300}, Qt::Vertical);
+    });
+  });
 
-  actions_ = Actions::create(this, {treeDock_->toggleViewAction(), log_->toggleViewAction()});
+  planPanel_ = new PlanPanel(doc_, builtinRegistry(), this);
+  addDockWidget(Qt::RightDockWidgetArea, planPanel_);
+  display_ = new DisplayPanel(view_, chart_, chartToggle, this);
+  addDockWidget(Qt::LeftDockWidgetArea, display_);
+  tabifyDockWidget(treeDock_, display_);
+  treeDock_->raise();
+
+  actions_ = Actions::create(this, {treeDock_->toggleViewAction(), display_->toggleViewAction(),
+                                    planPanel_->toggleViewAction(), log_->toggleViewAction(), chartToggle});
+  planPanel_->setPlanAction(actions_.plan);
+  // The bottom strip (messages, or the chart with its long abscissa) spans the whole width.
+  setCorner(Qt::BottomLeftCorner, Qt::BottomDockWidgetArea);
+  setCorner(Qt::BottomRightCorner, Qt::BottomDockWidgetArea);
+  resizeDocks({treeDock_, planPanel_}, {320, 370}, Qt::Horizontal);
+  resizeDocks({log_}, {150}, Qt::Vertical);
   recent_ = new RecentFiles(actions_.recentMenu, this);
   tasks_ = new TaskRunner(this, this);
+  connect(tasks_, &TaskRunner::progressed, this, [this](double fraction, const QString& stage) {
+    if (planning_) planPanel_->progress()->setProgress(fraction, stage);
+  });
+  connect(planPanel_->progress(), &StageProgress::cancelRequested, this, &MainWindow::cancelPlan);
 
   meshLabel_ = new QLabel(this);
   unitsLabel_ = new QLabel(tr("Units: mm"), this);
@@ -114,6 +154,8 @@ void MainWindow::connectActions()
   connect(a.viewTop, &QAction::triggered, this, [this] { view_->setCameraPreset(CameraPreset::Top); });
   connect(a.viewSide, &QAction::triggered, this, [this] { view_->setCameraPreset(CameraPreset::Side); });
   connect(a.fitView, &QAction::triggered, view_, &SceneView::fitView);
+  connect(a.plan, &QAction::triggered, this, &MainWindow::plan);
+  connect(a.cancelPlan, &QAction::triggered, this, &MainWindow::cancelPlan);
   connect(a.about, &QAction::triggered, this, &MainWindow::showAbout);
   connect(a.aboutQt, &QAction::triggered, qApp, &QApplication::aboutQt);
   connect(recent_, &RecentFiles::openRequested, this, [this](const QString& path) {
@@ -126,6 +168,7 @@ void MainWindow::onDocumentChanged(const ChangeSet& changes)
 {
   const bool part = changes.has(Change::Part);
   if (part || changes.has(Change::Substrate)) refreshScene(part);
+  if (part || changes.has(Change::Results)) refreshResults();
   if (part || changes.has(Change::Substrate) || changes.has(Change::Cell) || changes.has(Change::Settings) ||
       changes.has(Change::Results)) {
     refreshTree();

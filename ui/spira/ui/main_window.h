@@ -14,11 +14,16 @@ class QLabel;
 
 namespace spira::ui {
 
+class DisplayPanel;
 class DocumentTree;
 class LogPanel;
+class PlanPanel;
+class ProcessChart;
 class RecentFiles;
 class SceneView;
 class TaskRunner;
+struct PlanJobResult;
+struct TaskOutcome;
 
 struct MainWindowOptions {
   // Restore and save the window layout in QSettings (off for screenshots and tests, whose
@@ -48,6 +53,13 @@ class MainWindow : public QMainWindow {
   bool saveProject();
   bool saveProjectAs(const QString& path);
 
+  // Plans the document's part with its settings on a worker thread; the window stays usable
+  // and the Plan dock shows the progress. planFinished() reports the outcome.
+  void plan();
+  // Stops a running plan; the document keeps its previous results.
+  void cancelPlan();
+  bool planning() const { return planning_; }
+
   bool busy() const;
   // Runs the event loop until a running import has finished.
   void waitUntilIdle();
@@ -62,10 +74,16 @@ class MainWindow : public QMainWindow {
   SceneView* sceneView() const { return view_; }
   DocumentTree* documentTree() const { return tree_; }
   LogPanel* logPanel() const { return log_; }
+  PlanPanel* planPanel() const { return planPanel_; }
+  DisplayPanel* displayPanel() const { return display_; }
+  ProcessChart* processChart() const { return chart_; }
+  QDockWidget* chartDock() const { return chartDock_; }
+  TaskRunner* taskRunner() const { return tasks_; }
   RecentFiles* recentFiles() const { return recent_; }
 
  signals:
   void fileOpened(const QString& path, bool ok);
+  void planFinished(const spira::ui::TaskOutcome& outcome);
 
  protected:
   void closeEvent(QCloseEvent* event) override;
@@ -76,6 +94,8 @@ class MainWindow : public QMainWindow {
   void connectActions();
   void onDocumentChanged(const ChangeSet& changes);
   void refreshScene(bool partChanged);
+  void refreshResults();
+  void finishPlan(const TaskOutcome& outcome, const DocumentState& snapshot, const PlanJobResult& result);
   void refreshTree();
   void refreshUndoActions();
   void refreshTitle();
@@ -99,6 +119,12 @@ class MainWindow : public QMainWindow {
   DocumentTree* tree_ = nullptr;
   QDockWidget* treeDock_ = nullptr;
   LogPanel* log_ = nullptr;
+  PlanPanel* planPanel_ = nullptr;
+  DisplayPanel* display_ = nullptr;
+  ProcessChart* chart_ = nullptr;
+  QDockWidget* chartDock_ = nullptr;
+  bool planning_ = false;
+  bool hadSpiral_ = false;
   Actions actions_;
   RecentFiles* recent_ = nullptr;
   TaskRunner* tasks_ = nullptr;

@@ -41,8 +41,9 @@ void logImported(LogPanel* log, const QString& path, const ImportedPart& r)
 {
   const QLocale loc;
   const MeshReport& rep = r.report;
-  const QString loops = rep.boundaryLoops.size() == 1 ? QObject::tr("1 boundary loop")
-                                                      : QObject::tr("%1 boundary loops").arg(rep.boundaryLoops.size());
+  const QString loops = rep.boundaryLoops.size() == 1
+                            ? QObject::tr("1 boundary loop")
+                            : QObject::tr("%1 boundary loops").arg(rep.boundaryLoops.size());
   log->info(QObject::tr("Imported %1: %2 triangles, %3 vertices, %4 part (%5), %6 s.")
                 .arg(QFileInfo(path).fileName(), loc.toString(static_cast<qulonglong>(rep.faceCount)),
                      loc.toString(static_cast<qulonglong>(rep.vertexCount)),

@@ -27,8 +27,12 @@
 #include <vtkTextActor.h>
 #include <vtkTextProperty.h>
 
+#include "spira/document/results.h"
 #include "spira/mesh/triangle_mesh.h"
+#include "spira/ui/field_layer.h"
 #include "spira/ui/interaction_style.h"
+#include "spira/ui/path_layers.h"
+#include "spira/ui/spiral_layer.h"
 #include "spira/ui/substrate_grid.h"
 #include "spira/ui/vtk_mesh.h"
 
@@ -74,6 +78,10 @@ struct SceneView::Scene {
   std::optional<double> substrateZ;
   bool boundingBox = false;
   CameraPreset preset = CameraPreset::Iso;
+  PartStyle partStyle = PartStyle::Shaded;
+  std::unique_ptr<FieldLayer> field;
+  std::unique_ptr<PathLayers> paths;
+  std::unique_ptr<SpiralLayer> spiral;
 };
 
 SceneView::SceneView(QWidget* parent) : QWidget(parent), scene_(std::make_unique<Scene>())
@@ -174,6 +182,9 @@ SceneView::SceneView(QWidget* parent) : QWidget(parent), scene_(std::make_unique
   s.marker->SetEnabled(1);
   s.marker->InteractiveOff();
 
+  s.field = std::make_unique<FieldLayer>(s.renderer, s.partMapper);
+  s.paths = std::make_unique<PathLayers>(s.renderer);
+  s.spiral = std::make_unique<SpiralLayer>(s.renderer);
   setCameraPreset(CameraPreset::Iso);
 }
 
@@ -191,7 +202,70 @@ bool SceneView::hasOpenGL() const
 
 bool SceneView::hasPart() const
 {
-  return scene_->part->GetVisibility() != 0;
+  return validBounds(scene_->partBounds);
+}
+
+FieldLayer& SceneView::fieldLayer()
+{
+  return *scene_->field;
+}
+
+PathLayers& SceneView::pathLayers()
+{
+  return *scene_->paths;
+}
+
+SpiralLayer& SceneView::spiralLayer()
+{
+  return *scene_->spiral;
+}
+
+void SceneView::showResults(const Results& r, const Transform& T_world_part)
+{
+  Scene& s = *scene_;
+  if (r.field) {
+    const bool distance = r.field->kind == "geodesic_distance";
+    s.field->setField(r.field->values, distance ? tr("Geodesic distance") : tr("Harmonic field"),
+                      distance ? QStringLiteral("mm") : QString());
+  } else {
+    s.field->setField({}, QString(), QString());
+  }
+  const Bounds& b = s.partBounds;
+  const double diagonal = validBounds(b)
+                              ? std::sqrt((b[1] - b[0]) * (b[1] - b[0]) + (b[3] - b[2]) * (b[3] - b[2]) +
+                                          (b[5] - b[4]) * (b[5] - b[4]))
+                              : 100.0;
+  s.paths->setGeneratrices(r.generatrices.get(), T_world_part, 0.012 * diagonal);
+  const Trajectory* path = r.process ? r.process.get() : r.spiral.get();
+  s.spiral->setTrajectory(path, r.process != nullptr, planWindow(r), T_world_part);
+  applyPartStyle();
+  scheduleRender();
+}
+
+void SceneView::setPartStyle(PartStyle style)
+{
+  scene_->partStyle = style;
+  applyPartStyle();
+  scheduleRender();
+}
+
+PartStyle SceneView::partStyle() const
+{
+  return scene_->partStyle;
+}
+
+void SceneView::applyPartStyle()
+{
+  Scene& s = *scene_;
+  const PartStyle style = s.partStyle;
+  s.part->SetVisibility(validBounds(s.partBounds) && style != PartStyle::Hidden);
+  vtkProperty* p = s.part->GetProperty();
+  const bool ghost = style == PartStyle::Transparent;
+  p->SetOpacity(ghost ? 0.28 : 1.0);
+  s.part->GetBackfaceProperty()->SetOpacity(ghost ? 0.28 : 1.0);
+  // A coloured part shows its colours with little shine; the metal look keeps its highlight.
+  p->SetSpecular(style == PartStyle::Field ? 0.08 : 0.35);
+  s.field->setVisible(style == PartStyle::Field);
 }
 
 void SceneView::showPart(const TriangleMesh* mesh)
@@ -202,16 +276,17 @@ void SceneView::showPart(const TriangleMesh* mesh)
     vtkSmartPointer<vtkPolyData> poly = toShadedPolyData(*mesh);
     poly->GetBounds(bounds.data());
     s.partMapper->SetInputData(poly);
-    s.part->VisibilityOn();
+    s.field->setSurface(poly);
     s.outlineSource->SetBounds(bounds.data());
   } else {
     s.partMapper->SetInputData(vtkSmartPointer<vtkPolyData>::New());
-    s.part->VisibilityOff();
+    s.field->setSurface(nullptr);
   }
   s.outline->SetVisibility(s.boundingBox && validBounds(bounds));
   s.hint->SetVisibility(!validBounds(bounds));
   const bool extentChanged = bounds != s.partBounds;
   s.partBounds = bounds;
+  applyPartStyle();
   updateSubstrate();
   if (extentChanged) setCameraPreset(CameraPreset::Iso);
   scheduleRender();

@@ -6,16 +6,31 @@
 #include <QImage>
 #include <QWidget>
 
+#include "spira/base/transform.h"
+
 class QVTKOpenGLNativeWidget;
 class vtkRenderer;
 
 namespace spira {
 struct TriangleMesh;
-}
+struct Results;
+}  // namespace spira
 
 namespace spira::ui {
 
+class FieldLayer;
+class PathLayers;
+class SpiralLayer;
+
 enum class CameraPreset { Iso, Front, Top, Side };
+
+// How the part's surface is drawn under the plan's curves.
+enum class PartStyle {
+  Shaded,       // plain metal
+  Field,        // coloured by the plan's scalar field, with iso-lines
+  Transparent,  // a faint ghost, so the spiral on it reads clearly
+  Hidden,
+};
 
 // The central 3D view: the part shaded (edges on demand), the substrate plate with a grid, an
 // orientation marker and an optional bounding box. It draws what it is given and keeps no model
@@ -32,6 +47,17 @@ class SceneView : public QWidget {
   void showPart(const TriangleMesh* mesh);
   // Shows the substrate plate at height `z` (mm), sized from the part's footprint; nullopt hides it.
   void showSubstrate(std::optional<double> z);
+
+  // Shows a plan's results (field, generatrices, closure point, spiral) computed in the part
+  // frame, drawn where T_world_part places the part.
+  void showResults(const Results& results, const Transform& T_world_part);
+  FieldLayer& fieldLayer();
+  PathLayers& pathLayers();
+  SpiralLayer& spiralLayer();
+  void setPartStyle(PartStyle style);
+  PartStyle partStyle() const;
+  // Renders soon (once control returns to the event loop), after a layer was changed.
+  void scheduleRender();
 
   void setEdgesVisible(bool on);
   bool edgesVisible() const;
@@ -57,7 +83,7 @@ class SceneView : public QWidget {
  private:
   struct Scene;
   void updateSubstrate();
-  void scheduleRender();
+  void applyPartStyle();
   bool renderPending_ = false;
   std::unique_ptr<Scene> scene_;
   QVTKOpenGLNativeWidget* vtkWidget_ = nullptr;

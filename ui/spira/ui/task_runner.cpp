@@ -30,19 +30,27 @@ struct TaskRunner::Shared {
 };
 
 TaskRunner::TaskRunner(QWidget* dialogParent, QObject* parent)
-    : QObject(parent), dialogParent_(dialogParent), poll_(new QTimer(this))
+    : QObject(parent), dialogParent_(dialogParent), poll_(new QTimer(this)), grace_(new QTimer(this))
 {
   qRegisterMetaType<TaskOutcome>();
   poll_->setInterval(50);
   connect(poll_, &QTimer::timeout, this, &TaskRunner::pollProgress);
+  grace_->setSingleShot(true);
+  grace_->setInterval(kCancelGraceMs);
+  connect(grace_, &QTimer::timeout, this, &TaskRunner::abandon);
 }
 
 TaskRunner::~TaskRunner()
 {
+  // Leaving a running thread behind would crash at exit; ask the jobs to stop and wait.
   if (thread_) {
-    // Leaving a running thread behind would crash at exit; ask the job to stop and wait.
     shared_->progress.cancel();
     thread_->wait();
+    delete thread_;
+  }
+  for (QThread* t : abandoned_) {
+    t->wait();
+    delete t;
   }
 }
 
@@ -51,14 +59,14 @@ bool TaskRunner::busy() const
   return thread_ != nullptr;
 }
 
-bool TaskRunner::start(const QString& title, Job job, Done done)
+bool TaskRunner::start(const QString& title, Job job, Done done, Display display)
 {
   if (thread_) return false;
   done_ = std::move(done);
   title_ = title;
   shared_ = std::make_shared<Shared>();
   std::shared_ptr<Shared> shared = shared_;
-  thread_ = QThread::create([shared, job = std::move(job)] {
+  QThread* thread = QThread::create([shared, job = std::move(job)] {
     TaskOutcome out;
     try {
       job(shared->progress);
@@ -80,32 +88,44 @@ bool TaskRunner::start(const QString& title, Job job, Done done)
     std::lock_guard<std::mutex> lock(shared->mutex);
     shared->outcome = out;
   });
-  connect(thread_, &QThread::finished, this, &TaskRunner::onThreadFinished);
+  thread_ = thread;
+  connect(thread, &QThread::finished, this, [this, thread] {
+    if (thread == thread_) {
+      onThreadFinished();
+      return;
+    }
+    // An abandoned job came back: nobody waits for its outcome any more.
+    abandoned_.erase(std::remove(abandoned_.begin(), abandoned_.end(), thread), abandoned_.end());
+    thread->deleteLater();
+  });
 
-  dialog_ = new QProgressDialog(title, tr("Cancel"), 0, 1000, dialogParent_);
-  dialog_->setWindowTitle(title);
-  dialog_->setWindowModality(Qt::WindowModal);
-  // Quick jobs finish before the dialog would flash up.
-  dialog_->setMinimumDuration(400);
-  dialog_->setAutoClose(false);
-  dialog_->setAutoReset(false);
-  dialog_->setValue(0);
-  connect(dialog_, &QProgressDialog::canceled, this, &TaskRunner::cancel);
+  if (display == Display::Dialog) {
+    dialog_ = new QProgressDialog(title, tr("Cancel"), 0, 1000, dialogParent_);
+    dialog_->setWindowTitle(title);
+    dialog_->setWindowModality(Qt::WindowModal);
+    // Quick jobs finish before the dialog would flash up.
+    dialog_->setMinimumDuration(400);
+    dialog_->setAutoClose(false);
+    dialog_->setAutoReset(false);
+    dialog_->setValue(0);
+    connect(dialog_, &QProgressDialog::canceled, this, &TaskRunner::cancel);
+  }
   poll_->start();
-  thread_->start();
+  thread->start();
   return true;
 }
 
 void TaskRunner::cancel()
 {
-  if (!shared_) return;
+  if (!thread_ || shared_->progress.cancelled()) return;
   shared_->progress.cancel();
   if (dialog_) dialog_->setLabelText(tr("Cancelling..."));
+  grace_->start();
 }
 
 void TaskRunner::pollProgress()
 {
-  if (!dialog_ || !shared_) return;
+  if (!shared_ || !thread_) return;
   double fraction = 0.0;
   std::string stage;
   {
@@ -114,25 +134,44 @@ void TaskRunner::pollProgress()
     stage = shared_->stage;
   }
   if (shared_->progress.cancelled()) return;
-  dialog_->setValue(static_cast<int>(1000.0 * std::clamp(fraction, 0.0, 1.0)));
+  fraction = std::clamp(fraction, 0.0, 1.0);
+  emit progressed(fraction, QString::fromStdString(stage));
+  if (!dialog_) return;
+  dialog_->setValue(static_cast<int>(1000.0 * fraction));
   // Keep the job's name (which file) above the stage the job reports.
   if (!stage.empty()) dialog_->setLabelText(title_ + QLatin1Char('\n') + QString::fromStdString(stage));
 }
 
+void TaskRunner::abandon()
+{
+  if (!thread_) return;
+  abandoned_.push_back(thread_);
+  thread_ = nullptr;
+  TaskOutcome out;
+  out.status = TaskOutcome::Status::Cancelled;
+  complete(out);
+}
+
 void TaskRunner::onThreadFinished()
 {
-  poll_->stop();
+  grace_->stop();
   thread_->deleteLater();
   thread_ = nullptr;
-  if (dialog_) {
-    dialog_->hide();
-    dialog_->deleteLater();
-    dialog_ = nullptr;
-  }
   TaskOutcome out;
   {
     std::lock_guard<std::mutex> lock(shared_->mutex);
     out = shared_->outcome;
+  }
+  complete(out);
+}
+
+void TaskRunner::complete(const TaskOutcome& out)
+{
+  poll_->stop();
+  if (dialog_) {
+    dialog_->hide();
+    dialog_->deleteLater();
+    dialog_ = nullptr;
   }
   Done done = std::move(done_);
   done_ = nullptr;

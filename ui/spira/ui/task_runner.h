@@ -2,6 +2,7 @@
 
 #include <functional>
 #include <memory>
+#include <vector>
 
 #include <QMetaType>
 #include <QObject>
@@ -26,16 +27,26 @@ struct TaskOutcome {
   bool succeeded() const { return status == Status::Succeeded; }
 };
 
-// Runs one job at a time on a worker thread while a window-modal progress dialog shows its
-// progress and offers Cancel. The job reports through the spira::Progress it is given and must
-// call checkCancel() in its loops; it must not touch widgets or the Document (hand results back
-// through captured state, read them in the finished() handler on the GUI thread).
+// Runs one job at a time on a worker thread. The job reports through the spira::Progress it is
+// given and must call checkCancel() in its loops; it must not touch widgets or the Document (hand
+// results back through captured state, read them in the `done` handler on the GUI thread).
+//
+// Progress is shown either in a window-modal dialog with Cancel (imports: the window has nothing
+// to offer meanwhile) or only through progressed() (planning: the window stays usable and shows
+// progress itself).
+//
+// Cancel answers within kCancelGraceMs whatever the job does: a job that has not stopped by then
+// (a long sparse factorisation checks for cancellation only between steps) is abandoned. It runs
+// on to its next checkCancel() with nobody waiting for it, its outcome is dropped, and the next
+// job may start at once; the destructor still waits for it.
 class TaskRunner : public QObject {
   Q_OBJECT
 
  public:
   using Job = std::function<void(Progress&)>;
   using Done = std::function<void(const TaskOutcome&)>;
+  enum class Display { Dialog, Signals };
+  static constexpr int kCancelGraceMs = 50;
 
   // `dialogParent` is the window the progress dialog is modal to.
   explicit TaskRunner(QWidget* dialogParent, QObject* parent = nullptr);
@@ -44,25 +55,34 @@ class TaskRunner : public QObject {
   bool busy() const;
   // Starts `job`; `done` runs on the GUI thread when it has finished, before finished() is
   // emitted. Returns false (and does nothing) while another job runs.
-  bool start(const QString& title, Job job, Done done = {});
+  bool start(const QString& title, Job job, Done done = {}, Display display = Display::Dialog);
   void cancel();
   // Runs the event loop until the current job has finished (returns at once when idle).
   void waitForFinished();
+  // Jobs cancelled but not yet returned (they finish in the background).
+  int abandonedCount() const { return static_cast<int>(abandoned_.size()); }
 
  signals:
-  // Emitted on the GUI thread once the job has returned or thrown.
+  // Emitted on the GUI thread once the job has returned or thrown, or was abandoned on cancel.
   void finished(const spira::ui::TaskOutcome& outcome);
+  // The job's latest report (fraction of the whole job in [0, 1], stage name), polled a few
+  // times a second while it runs.
+  void progressed(double fraction, const QString& stage);
 
  private:
   struct Shared;
   void pollProgress();
   void onThreadFinished();
+  void abandon();
+  void complete(const TaskOutcome& out);
 
   QWidget* dialogParent_;
   std::shared_ptr<Shared> shared_;
   QThread* thread_ = nullptr;
+  std::vector<QThread*> abandoned_;
   QProgressDialog* dialog_ = nullptr;
   QTimer* poll_;
+  QTimer* grace_;
   Done done_;
   QString title_;
 };

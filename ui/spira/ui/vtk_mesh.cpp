@@ -4,6 +4,7 @@
 #include <vtkDoubleArray.h>
 #include <vtkIdTypeArray.h>
 #include <vtkNew.h>
+#include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataNormals.h>
@@ -46,8 +47,15 @@ vtkSmartPointer<vtkPolyData> toPolyData(const TriangleMesh& mesh)
 
 vtkSmartPointer<vtkPolyData> toShadedPolyData(const TriangleMesh& mesh)
 {
+  vtkSmartPointer<vtkPolyData> poly = toPolyData(mesh);
+  // Splitting duplicates points at creases; the ids lead per-vertex values (fields) to them.
+  vtkNew<vtkIdTypeArray> ids;
+  ids->SetName(kVertexIdArray);
+  ids->SetNumberOfValues(poly->GetNumberOfPoints());
+  for (vtkIdType i = 0; i < poly->GetNumberOfPoints(); ++i) ids->SetValue(i, i);
+  poly->GetPointData()->AddArray(ids);
   vtkNew<vtkPolyDataNormals> normals;
-  normals->SetInputData(toPolyData(mesh));
+  normals->SetInputData(poly);
   normals->SetFeatureAngle(40.0);
   normals->SplittingOn();
   normals->ConsistencyOff();

@@ -1,0 +1,65 @@
+#pragma once
+
+#include <optional>
+
+#include <vtkNew.h>
+
+#include "spira/base/transform.h"
+
+class vtkActor;
+class vtkCaptionActor2D;
+class vtkPolyData;
+class vtkPolyDataMapper;
+class vtkRenderer;
+class vtkSphereSource;
+
+namespace spira {
+struct Generatrices;
+}
+
+namespace spira::ui {
+
+// The decomposition of a plan in the 3D view: the generatrices as thin polylines from the base
+// up, and the closure point (closed parts) as a marked sphere with a caption.
+class PathLayers {
+ public:
+  explicit PathLayers(vtkRenderer* renderer);
+  ~PathLayers();
+
+  // Null clears. The lines are in the part frame, drawn where T_world_part places them;
+  // `markerRadius` sizes the closure point (mm).
+  void setGeneratrices(const Generatrices* lines, const Transform& T_world_part, double markerRadius);
+  void setGeneratricesVisible(bool on);
+  bool generatricesVisible() const { return linesVisible_; }
+  void setClosureVisible(bool on);
+  bool closureVisible() const { return closureVisible_; }
+
+  // Polylines drawn: every stride-th generatrix, so that at most kMaxLines show (hundreds of
+  // lines side by side only make a moire).
+  static constexpr int kMaxLines = 72;
+  long long lineCount() const;
+  int stride() const { return stride_; }
+  int generatrixCount() const { return generatrixCount_; }
+  std::optional<Vec3> closurePoint() const { return closure_; }
+  vtkActor* linesActor() const { return lines_; }
+  vtkActor* closureActor() const { return marker_; }
+
+ private:
+  void updateVisibility();
+
+  vtkNew<vtkPolyData> polylines_;
+  vtkNew<vtkPolyDataMapper> linesMapper_;
+  vtkNew<vtkActor> lines_;
+  vtkNew<vtkSphereSource> sphere_;
+  vtkNew<vtkPolyDataMapper> markerMapper_;
+  vtkNew<vtkActor> marker_;
+  vtkNew<vtkCaptionActor2D> caption_;
+  std::optional<Vec3> closure_;
+  bool linesVisible_ = false;
+  bool closureVisible_ = true;
+  bool hasLines_ = false;
+  int stride_ = 1;
+  int generatrixCount_ = 0;
+};
+
+}  // namespace spira::ui

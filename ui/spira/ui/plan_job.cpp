@@ -1,0 +1,167 @@
+#include "spira/ui/plan_job.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+
+#include <nlohmann/json.hpp>
+
+#include "spira/base/error.h"
+#include "spira/base/progress.h"
+#include "spira/document/invalidation.h"
+#include "spira/mesh/mesh_report.h"
+#include "spira/planning/plan_files.h"
+#include "spira/planning/plan_schemas.h"
+#include "spira/planning/planner.h"
+
+namespace spira::ui {
+
+namespace {
+
+std::shared_ptr<const nlohmann::json> share(nlohmann::json j)
+{
+  return std::make_shared<const nlohmann::json>(std::move(j));
+}
+
+nlohmann::json timingsJson(const StageTimings& timings)
+{
+  nlohmann::json t = nlohmann::json::object();
+  for (const auto& [stage, seconds] : timings) t[stage] = seconds;
+  return t;
+}
+
+std::string summaryLine(const PlanOutput& plan)
+{
+  const SpiralReport& s = plan.spiral.report;
+  char text[320];
+  std::snprintf(
+      text, sizeof text,
+      "%d revolutions%s, %zu points, path %.2f m, deposit height %.3f to %.3f mm, build time %.1f min",
+      s.nRevolutions - s.collapsedRevolutions, plan.hasClosure ? " and the closure point" : "", s.nPoints,
+      s.pathLength / 1000.0, s.heightMin, s.heightMax, plan.process.buildTime / 60.0);
+  return text;
+}
+
+}  // namespace
+
+const std::array<PlanStageSpan, kPlanStageCount>& planStageSpans()
+{
+  static const std::array<PlanStageSpan, kPlanStageCount> spans{{
+      {"Scalar field", 0.0, 0.30},
+      {"Closure point", 0.30, 0.35},
+      {"Generatrices", 0.35, 0.80},
+      {"Spiral", 0.80, 0.95},
+      {"Process", 0.95, 1.0},
+  }};
+  return spans;
+}
+
+int planStageAt(double fraction)
+{
+  const auto& spans = planStageSpans();
+  for (int i = kPlanStageCount - 1; i > 0; --i)
+    if (fraction >= spans[static_cast<size_t>(i)].begin) return i;
+  return 0;
+}
+
+PlanJobResult runPlan(const DocumentState& snapshot, const PluginRegistry& registry, Progress& progress)
+{
+  const auto start = std::chrono::steady_clock::now();
+  if (!snapshot.part || !snapshot.part->mesh || snapshot.part->mesh->empty())
+    throw InputError("there is no part to plan", "import a part first (File > Import Part...)");
+  const TriangleMesh& mesh = *snapshot.part->mesh;
+  const PlanSettings& settings = *snapshot.settings;
+  progress.report(0.0, "checking the mesh");
+  const MeshReport report = validateMesh(mesh);
+  progress.checkCancel();
+
+  PlanRequest request(mesh, report);
+  // The mesh is in the part frame; the substrate plane is stored in the world frame.
+  request.substrateZ = snapshot.substrate->planeZ - snapshot.part->T_world_part.translation().z();
+  request.lowerLoopOverride = snapshot.part->lowerBoundaryOverride;
+  request.decomposerId = settings.decomposerId;
+  request.closureFinderId = settings.closureFinderId;
+  request.params = settings.params;
+  PlanOutput plan = planPart(registry, request, progress);
+
+  PlanJobResult out;
+  out.feasible = plan.feasible();
+  out.warnings = plan.warnings;
+  out.summary = summaryLine(plan);
+  out.windowViolations = plan.spiral.report.violations.size();
+  out.limitViolations = plan.process.violations.size();
+
+  const SpiralSettings window = spiralSettingsFrom(settings.section(PlanSettings::kSpiralSection));
+  nlohmann::json full = planReportJson(plan, settings.decomposerId);
+  full["h"] = window.h;
+  full["h_min"] = window.hMin;
+  full["h_max"] = window.hMax;
+  full["height_tolerance_mm"] = plan.spiral.report.heightTolerance;
+  full["collapsed_revolutions"] = plan.spiral.report.collapsedRevolutions;
+
+  Results& r = out.results;
+  auto field = std::make_shared<FieldResult>();
+  field->kind = plan.fieldKind;
+  field->source = plan.hasClosure ? "heat-method geodesic distance from the base edge"
+                                  : "harmonic field, 0 on the base edge and 1 on the upper edge";
+  field->values = std::move(plan.field);
+  r.setField(std::move(field));
+  nlohmann::json fieldReport{{"kind", plan.fieldKind}, {"timings_s", timingsJson(plan.timings)}};
+  if (plan.hasClosure) {
+    fieldReport["closure_point"] = {plan.closure.point.x(), plan.closure.point.y(), plan.closure.point.z()};
+    fieldReport["closure_distance"] = plan.closure.distance;
+  }
+  r.setReport(Stage::Field, share(std::move(fieldReport)));
+
+  Generatrices lines = std::move(plan.generatrices);
+  if (plan.hasClosure && !lines.hasClosurePoint) {
+    lines.hasClosurePoint = true;
+    lines.closurePoint = plan.closure.point;
+  }
+  r.setGeneratrices(std::make_shared<const Generatrices>(std::move(lines)));
+  r.setReport(Stage::Generatrices, share({{"n_generatrices", full["n_generatrices"]},
+                                          {"generatrix_length_min", full["generatrix_length_min"]},
+                                          {"generatrix_length_max", full["generatrix_length_max"]}}));
+
+  // The spiral stage holds geometry and heights only: its speeds belong to the process stage,
+  // which process edits drop on their own.
+  auto processed = std::make_shared<const Trajectory>(std::move(plan.spiral.trajectory));
+  auto geometry = std::make_shared<Trajectory>(*processed);
+  for (TrajectoryPoint& p : geometry->points) p.travelSpeed = p.wireFeed = 0.0;
+  r.setSpiral(std::move(geometry));
+  nlohmann::json processReport = full["process"];
+  processReport["build_time_s"] = plan.process.buildTime;
+  full.erase("process");
+  r.setReport(Stage::Spiral, share(std::move(full)));
+  r.setProcess(std::move(processed));
+  r.setReport(Stage::Process, share(std::move(processReport)));
+
+  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return out;
+}
+
+std::optional<Stage> storePlanResults(Document& doc, const DocumentState& snapshot, const Results& computed)
+{
+  const std::optional<Stage> stale = firstInvalidatedStage(snapshot, doc.state());
+  Results r = computed;
+  if (stale) r.invalidateFrom(*stale);
+  if (stale && stageIndex(*stale) <= stageIndex(Stage::Field)) return stale;
+  // Later stages of the document (kinematics, export) were computed from the previous plan.
+  doc.setResults(std::move(r));
+  if (stale && stageIndex(*stale) > stageIndex(Stage::Process)) return std::nullopt;
+  return stale;
+}
+
+std::optional<PlanWindow> planWindow(const Results& results)
+{
+  const auto& report = results.report(Stage::Spiral);
+  if (!report || !report->contains("h_min") || !report->contains("h_max")) return std::nullopt;
+  PlanWindow w;
+  w.h = report->value("h", 0.0);
+  w.hMin = report->value("h_min", 0.0);
+  w.hMax = report->value("h_max", 0.0);
+  w.tolerance = report->value("height_tolerance_mm", 0.0);
+  return w;
+}
+
+}  // namespace spira::ui

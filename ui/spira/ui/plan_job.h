@@ -1,0 +1,56 @@
+#pragma once
+
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "spira/document/document.h"
+
+namespace spira {
+class PluginRegistry;
+class Progress;
+}  // namespace spira
+
+namespace spira::ui {
+
+// One stage of a plan as the progress display shows it: the part of the job's [0, 1] progress it
+// covers. The spans mirror the SubProgress ranges planPart() hands its stages.
+struct PlanStageSpan {
+  const char* label;
+  double begin, end;
+};
+constexpr int kPlanStageCount = 5;
+const std::array<PlanStageSpan, kPlanStageCount>& planStageSpans();
+// The stage index whose span holds `fraction` (the last one from its begin on).
+int planStageAt(double fraction);
+
+// What a plan computed off the GUI thread hands back: the staged results (field, generatrices,
+// spiral, process, each with its report) and what the user should read about it.
+struct PlanJobResult {
+  Results results;
+  std::vector<std::string> warnings;
+  bool feasible = false;
+  std::string summary;  // one line: revolutions, points, heights, build time
+  size_t windowViolations = 0;
+  size_t limitViolations = 0;
+  double seconds = 0.0;
+};
+
+// Plans the part of `snapshot` with its settings (worker thread: touches no widget and no
+// Document). Throws InputError when there is no part, and whatever planPart() throws.
+PlanJobResult runPlan(const DocumentState& snapshot, const PluginRegistry& registry, Progress& progress);
+
+// Stores the results of a plan made on `snapshot` into `doc`, keeping only the stages that the
+// edits made since (while it ran) left valid. Returns the first stage dropped, or nullopt when
+// all were stored.
+std::optional<Stage> storePlanResults(Document& doc, const DocumentState& snapshot, const Results& computed);
+
+// The process window the spiral report of a plan carries (mm); nullopt without a spiral report.
+struct PlanWindow {
+  double h = 0.0, hMin = 0.0, hMax = 0.0, tolerance = 0.0;
+  bool outside(double height) const { return height < hMin - tolerance || height > hMax + tolerance; }
+};
+std::optional<PlanWindow> planWindow(const Results& results);
+
+}  // namespace spira::ui

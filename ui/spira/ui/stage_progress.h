@@ -1,0 +1,46 @@
+#pragma once
+
+#include <array>
+
+#include <QWidget>
+
+#include "spira/ui/plan_job.h"
+
+class QLabel;
+class QProgressBar;
+class QPushButton;
+
+namespace spira::ui {
+
+// The progress of a running plan, one bar per stage (field, closure point, generatrices, spiral,
+// process) with the job's own words on what it is doing, and a Cancel button. Hidden when idle.
+class StageProgress : public QWidget {
+  Q_OBJECT
+
+ public:
+  explicit StageProgress(QWidget* parent = nullptr);
+
+  // Resets every bar and shows the widget.
+  void start();
+  // The job reported `fraction` of the whole plan (see planStageSpans) while doing `what`.
+  void setProgress(double fraction, const QString& what);
+  // Hides the widget.
+  void stop();
+
+  int currentStage() const { return current_; }
+  // Percent shown by the bar of `stage` (0..100).
+  int stagePercent(int stage) const;
+  QPushButton* cancelButton() const { return cancel_; }
+
+ signals:
+  void cancelRequested();
+
+ private:
+  std::array<QLabel*, kPlanStageCount> labels_{};
+  std::array<QProgressBar*, kPlanStageCount> bars_{};
+  QLabel* what_ = nullptr;
+  QPushButton* cancel_ = nullptr;
+  int current_ = 0;
+};
+
+}  // namespace spira::ui
