@@ -5,6 +5,7 @@
 #include "axis_choice.h"
 #include "envelope_projection.h"
 #include "spira/base/error.h"
+#include "spira/plugin/decomposer_params.h"
 #include "spira/plugin/plugin_registry.h"
 
 namespace spira {
@@ -14,35 +15,9 @@ namespace {
 ParamSchema makeSchema()
 {
   std::vector<ParamDef> defs;
-  {
-    ParamDef d;
-    d.key = "points_per_rev";
-    d.type = ParamType::Int;
-    d.defaultValue = std::int64_t{360};
-    d.min = 8;
-    d.max = 20000;
-    d.label = "Points per revolution";
-    d.tooltip =
-        "Number of envelope generatrices, i.e. path points per revolution, spread evenly in angle "
-        "around the part's axis.";
-    d.category = "Discretisation";
-    defs.push_back(d);
-  }
-  {
-    ParamDef d;
-    d.key = "point_spacing";
-    d.type = ParamType::Double;
-    d.defaultValue = 0.0;
-    d.min = 0.0;
-    d.max = 1000.0;
-    d.unit = "mm";
-    d.label = "Point spacing";
-    d.tooltip =
-        "Mean distance between consecutive points of a generatrix. 0 uses the mesh's mean edge "
-        "length, the finest spacing the mesh resolves.";
-    d.category = "Discretisation";
-    defs.push_back(d);
-  }
+  defs.push_back(
+      pointsPerRevolutionParam("Envelope generatrices are spread evenly in angle around the part's axis."));
+  defs.push_back(levelSpacingParam("Every generatrix gets the same number of points."));
   {
     ParamDef d;
     d.key = "axis";
@@ -126,7 +101,7 @@ DecomposeResult EnvelopeDecomposer::decompose(const DecomposeInput& input, const
   schema_.validate(values);
   EnvelopeOptions options;
   options.generatrixCount = static_cast<size_t>(values.getInt("points_per_rev"));
-  options.pointSpacing = values.internal(schema_, "point_spacing");
+  options.pointSpacing = values.internal(schema_, "level_spacing");
   options.startAngle = values.internal(schema_, "start_angle");
   const AxisMode mode = axisMode(values.getString("axis"));
 

@@ -4,6 +4,7 @@
 
 #include "geodesic_decomposition.h"
 #include "spira/base/error.h"
+#include "spira/plugin/decomposer_params.h"
 #include "spira/plugin/plugin_registry.h"
 
 namespace spira {
@@ -13,37 +14,10 @@ namespace {
 ParamSchema makeSchema()
 {
   std::vector<ParamDef> defs;
-  {
-    // Same key and meaning as decomposer.isovalue's, so one CLI flag and one project value serve both.
-    ParamDef d;
-    d.key = "points_per_rev";
-    d.type = ParamType::Int;
-    d.defaultValue = std::int64_t{360};
-    d.min = 8;
-    d.max = 20000;
-    d.label = "Points per revolution";
-    d.tooltip =
-        "Number of generatrices, i.e. path points per revolution: the base is cut at this many constant "
-        "angles and each cut starts one geodesic. Fill-in generatrices may add more where geodesics leave "
-        "gaps.";
-    d.category = "Discretisation";
-    defs.push_back(d);
-  }
-  {
-    ParamDef d;
-    d.key = "level_spacing";
-    d.type = ParamType::Double;
-    d.defaultValue = 0.0;
-    d.min = 0.0;
-    d.max = 1000.0;
-    d.unit = "mm";
-    d.label = "Point spacing";
-    d.tooltip =
-        "Mean distance on the surface between the points of each generatrix (every generatrix gets the same "
-        "number of points). 0 uses the mesh's mean edge length.";
-    d.category = "Discretisation";
-    defs.push_back(d);
-  }
+  defs.push_back(pointsPerRevolutionParam(
+      "The base is cut at this many constant angles and each cut starts one geodesic; fill-in "
+      "generatrices may add more where geodesics leave gaps."));
+  defs.push_back(levelSpacingParam("Every generatrix gets the same number of points."));
   {
     ParamDef d;
     d.key = "coverage_tolerance";
@@ -76,19 +50,6 @@ ParamSchema makeSchema()
   return ParamSchema(std::move(defs));
 }
 
-bool canPlan(const DecomposeInput& input, std::string* why)
-{
-  auto no = [&](const std::string& reason) {
-    if (why) *why = reason;
-    return false;
-  };
-  if (input.partClass == PartClass::Unsupported)
-    return no("the part is neither open (two free edges) nor closed (one free edge)");
-  if (input.partClass == PartClass::Open && !input.upper) return no("the open part has no upper edge");
-  if (input.lower.vertices.size() < 3) return no("the part has no lower edge");
-  return true;
-}
-
 }  // namespace
 
 GeodesicDecomposer::GeodesicDecomposer() : schema_(makeSchema()) {}
@@ -102,14 +63,14 @@ std::string GeodesicDecomposer::description() const
 
 bool GeodesicDecomposer::accepts(const DecomposeInput& input, std::string* why) const
 {
-  return canPlan(input, why);
+  return hasPlannableEdges(input, why);
 }
 
 DecomposeResult GeodesicDecomposer::decompose(const DecomposeInput& input, const ParamSet& params,
                                               Progress& progress) const
 {
   std::string why;
-  if (!canPlan(input, &why))
+  if (!hasPlannableEdges(input, &why))
     throw InputError("decomposer.geodesic cannot plan this part: " + why, "check the part's free edges");
   const ParamSet values = params.withDefaults(schema_);
   schema_.validate(values);

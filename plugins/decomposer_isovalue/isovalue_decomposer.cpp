@@ -6,6 +6,7 @@
 #include "spira/contour/isovalue_decomposition.h"
 #include "spira/field/harmonic_field.h"
 #include "spira/field/heat_distance.h"
+#include "spira/plugin/decomposer_params.h"
 #include "spira/plugin/plugin_registry.h"
 
 namespace spira {
@@ -15,53 +16,10 @@ namespace {
 ParamSchema makeSchema()
 {
   std::vector<ParamDef> defs;
-  {
-    ParamDef d;
-    d.key = "points_per_rev";
-    d.type = ParamType::Int;
-    d.defaultValue = std::int64_t{360};
-    d.min = 8;
-    d.max = 20000;
-    d.label = "Points per revolution";
-    d.tooltip =
-        "Number of generatrices, i.e. path points per revolution. Every iso-contour is resampled to this "
-        "many "
-        "points; raise it for large or strongly curved parts.";
-    d.category = "Discretisation";
-    defs.push_back(d);
-  }
-  {
-    ParamDef d;
-    d.key = "level_spacing";
-    d.type = ParamType::Double;
-    d.defaultValue = 0.0;
-    d.min = 0.0;
-    d.max = 1000.0;
-    d.unit = "mm";
-    d.label = "Iso-level spacing";
-    d.tooltip =
-        "Mean distance on the surface between consecutive iso-contours, i.e. between the points of each "
-        "generatrix. 0 uses the mesh's mean edge length, the finest spacing the mesh resolves.";
-    d.category = "Discretisation";
-    defs.push_back(d);
-  }
+  defs.push_back(pointsPerRevolutionParam(
+      "Every iso-contour is resampled to this many points; raise it for large or strongly curved parts."));
+  defs.push_back(levelSpacingParam("Here: the spacing of the iso-contours."));
   return ParamSchema(std::move(defs));
-}
-
-bool canPlan(const DecomposeInput& input, std::string* why)
-{
-  auto no = [&](const std::string& reason) {
-    if (why) *why = reason;
-    return false;
-  };
-  if (input.partClass == PartClass::Unsupported)
-    return no("the part is neither open (two free edges) nor closed (one free edge)");
-  if (input.partClass == PartClass::Open && !input.upper) return no("the open part has no upper edge");
-  if (input.lower.vertices.size() < 3) return no("the part has no lower edge");
-  if (input.field && input.field->size() != input.mesh.vertexCount())
-    return no("the scalar field has " + std::to_string(input.field->size()) + " values for " +
-              std::to_string(input.mesh.vertexCount()) + " vertices");
-  return true;
 }
 
 }  // namespace
@@ -76,14 +34,14 @@ std::string IsovalueDecomposer::description() const
 
 bool IsovalueDecomposer::accepts(const DecomposeInput& input, std::string* why) const
 {
-  return canPlan(input, why);
+  return hasPlannableEdges(input, why);
 }
 
 DecomposeResult IsovalueDecomposer::decompose(const DecomposeInput& input, const ParamSet& params,
                                               Progress& progress) const
 {
   std::string why;
-  if (!canPlan(input, &why))
+  if (!hasPlannableEdges(input, &why))
     throw InputError("decomposer.isovalue cannot plan this part: " + why,
                      "check the part's free edges, or recompute the field for this mesh");
   const ParamSet values = params.withDefaults(schema_);

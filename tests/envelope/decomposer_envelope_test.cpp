@@ -44,7 +44,7 @@ TEST(DecomposerEnvelope, IsRegisteredWithASoundSchema)
   ASSERT_NE(axis, nullptr);
   EXPECT_EQ(axis->type, ParamType::Choice);
   EXPECT_EQ(std::get<std::string>(axis->defaultValue), "auto");
-  ASSERT_NE(p.schema().find("point_spacing"), nullptr);
+  ASSERT_NE(p.schema().find("level_spacing"), nullptr);
   EXPECT_EQ(p.schema().find("start_angle")->unit, "deg");
 }
 
@@ -71,7 +71,7 @@ TEST(DecomposerEnvelope, AutoAxisDecomposesACylinderThroughItsSkeleton)
   const MeshReport r = validateMesh(tube);
   ParamSet params;
   params.set("points_per_rev", std::int64_t{90});
-  params.set("point_spacing", 2.5);
+  params.set("level_spacing", 2.5);
   NullProgress progress;
   const DecomposeResult res = envelope().decompose(openInput(tube, r), params, progress);
   ASSERT_EQ(res.generatrices.lines.size(), 90u);

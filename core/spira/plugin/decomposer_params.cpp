@@ -1,0 +1,51 @@
+#include "spira/plugin/decomposer_params.h"
+
+namespace spira {
+
+ParamDef pointsPerRevolutionParam(const std::string& how)
+{
+  ParamDef d;
+  d.key = "points_per_rev";
+  d.type = ParamType::Int;
+  d.defaultValue = std::int64_t{360};
+  d.min = 8;
+  d.max = 20000;
+  d.label = "Points per revolution";
+  d.tooltip = "Number of generatrices, i.e. path points per revolution. " + how;
+  d.category = "Discretisation";
+  return d;
+}
+
+ParamDef levelSpacingParam(const std::string& how)
+{
+  ParamDef d;
+  d.key = "level_spacing";
+  d.type = ParamType::Double;
+  d.defaultValue = 0.0;
+  d.min = 0.0;
+  d.max = 1000.0;
+  d.unit = "mm";
+  d.label = "Point spacing";
+  d.tooltip = "Mean distance on the surface between consecutive points of each generatrix. " + how +
+              " 0 uses the mesh's mean edge length, the finest spacing the mesh resolves.";
+  d.category = "Discretisation";
+  return d;
+}
+
+bool hasPlannableEdges(const DecomposeInput& input, std::string* why)
+{
+  auto no = [&](const std::string& reason) {
+    if (why) *why = reason;
+    return false;
+  };
+  if (input.partClass == PartClass::Unsupported)
+    return no("the part is neither open (two free edges) nor closed (one free edge)");
+  if (input.partClass == PartClass::Open && !input.upper) return no("the open part has no upper edge");
+  if (input.lower.vertices.size() < 3) return no("the part has no lower edge");
+  if (input.field && input.field->size() != input.mesh.vertexCount())
+    return no("the scalar field has " + std::to_string(input.field->size()) + " values for " +
+              std::to_string(input.mesh.vertexCount()) + " vertices");
+  return true;
+}
+
+}  // namespace spira
