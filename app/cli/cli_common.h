@@ -41,5 +41,6 @@ int cmdPlan(const std::vector<std::string>& args);
 int cmdField(const std::vector<std::string>& args);
 int cmdKin(const std::vector<std::string>& args);
 int cmdExport(const std::vector<std::string>& args);
+int cmdCompare(const std::vector<std::string>& args);
 
 }  // namespace spira::cli

@@ -41,9 +41,12 @@ void printSummary(const PlanOutput& plan, std::ostream& out)
 {
   const SpiralReport& s = plan.spiral.report;
   out << std::fixed << std::setprecision(3);
-  out << (plan.topology.partClass == PartClass::Open ? "open" : "closed") << " part, "
-      << plan.generatrices.lines.size() << " generatrices of " << s.generatrixLengthMin << " .. "
-      << s.generatrixLengthMax << " mm\n";
+  const char* kind = plan.topology.partClass == PartClass::Open ? "open" : "closed";
+  out << (plan.branching ? "multi-branch" : kind) << " part, " << plan.generatrices.lines.size()
+      << " generatrices of " << s.generatrixLengthMin << " .. " << s.generatrixLengthMax << " mm\n";
+  if (plan.paths.size() > 1)
+    out << plan.paths.size() << " sub-paths (trunk first), one arc start and stop each, split at "
+        << plan.branching->saddles.size() << " saddle(s)\n";
   out << s.nRevolutions << " revolutions (" << s.nStartupRevolutions << " start-up, " << s.nLayers
       << " modulated, " << s.nEndRevolutions << " closing), " << s.nPoints << " points, path " << s.pathLength
       << " mm\n";

@@ -8,6 +8,8 @@
 #include <nlohmann/json.hpp>
 
 #include "cli_runner.h"
+#include "planning/slanted_tube.h"
+#include "planning/y_tube.h"
 #include "spira/base/units.h"
 #include "spira/io/mesh_writers.h"
 #include "support/test_support.h"
@@ -27,6 +29,7 @@ struct CsvRow {
   int rev = 0, gen = 0;
   double height = 0, ts = 0, wfs = 0;
   int arc = 0;
+  int path = 0;
 };
 
 std::vector<CsvRow> readTrajectory(const fs::path& file, std::string* header)
@@ -40,7 +43,8 @@ std::vector<CsvRow> readTrajectory(const fs::path& file, std::string* header)
     std::string cell;
     std::vector<double> v;
     while (std::getline(s, cell, ',')) v.push_back(std::stod(cell));
-    EXPECT_EQ(v.size(), 19u);
+    EXPECT_EQ(v.size(), 20u);
+    if (v.size() != 20u) continue;
     CsvRow r;
     r.p = Vec3(v[1], v[2], v[3]);
     r.n = Vec3(v[4], v[5], v[6]);
@@ -52,6 +56,7 @@ std::vector<CsvRow> readTrajectory(const fs::path& file, std::string* header)
     r.ts = v[16];
     r.wfs = v[17];
     r.arc = static_cast<int>(v[18]);
+    r.path = static_cast<int>(v[19]);
     rows.push_back(r);
   }
   return rows;
@@ -86,7 +91,8 @@ TEST(CliPlan, CylinderWritesTheContractedFiles)
 
   std::string header;
   const auto rows = readTrajectory(dir / "trajectory.csv", &header);
-  EXPECT_EQ(header, "index,x,y,z,nx,ny,nz,tx,ty,tz,bx,by,bz,rev,gen,height,ts,wfs,arc");
+  EXPECT_EQ(header, "index,x,y,z,nx,ny,nz,tx,ty,tz,bx,by,bz,rev,gen,height,ts,wfs,arc,path");
+  EXPECT_EQ(report["n_paths"], 1);
   ASSERT_EQ(rows.size(), report["n_points"].get<size_t>());
   double zMax = 0.0;
   for (const auto& row : rows) {
@@ -96,6 +102,7 @@ TEST(CliPlan, CylinderWritesTheContractedFiles)
     EXPECT_NEAR(row.n.cross(row.t).dot(row.b), 1.0, 1e-9);  // b = n x t
     EXPECT_NEAR(row.wfs, 2.3, 1e-9);                        // synergic: constant wire feed, m/min
     EXPECT_EQ(row.arc, 1);
+    EXPECT_EQ(row.path, 0);
     EXPECT_GE(row.height, 0.9 - 0.005);  // the whole path, ramps included, in the window
     EXPECT_LE(row.height, 1.1 + 0.005);
   }
@@ -175,27 +182,6 @@ TEST(CliPlan, DomeIsFeasibleEverywhereAndEndsAtTheClosurePoint)
   EXPECT_LT(gap, 5.2 / 2.0 + 2.2 * 1.05);
 }
 
-// An open wall whose top edge is slanted: generatrices from H - a to H + a long.
-TriangleMesh slantedTube(double radius, double height, double slant, int segments, int rings)
-{
-  TriangleMesh m;
-  for (int j = 0; j <= rings; ++j)
-    for (int i = 0; i < segments; ++i) {
-      const double a = 2.0 * kPi * i / segments;
-      const double top = height + slant * std::cos(a);
-      m.vertices.emplace_back(radius * std::cos(a), radius * std::sin(a), top * j / rings);
-    }
-  for (int j = 0; j < rings; ++j)
-    for (int i = 0; i < segments; ++i) {
-      const int i1 = (i + 1) % segments;
-      const int a = j * segments + i, b = j * segments + i1, c = (j + 1) * segments + i1,
-                d = (j + 1) * segments + i;
-      m.faces.push_back({a, b, c});
-      m.faces.push_back({a, c, d});
-    }
-  return m;
-}
-
 TEST(CliPlan, TooDifferentGeneratricesAreInfeasibleWithTheReportWritten)
 {
   TempDir dir;
@@ -209,6 +195,45 @@ TEST(CliPlan, TooDifferentGeneratricesAreInfeasibleWithTheReportWritten)
   EXPECT_GT(report["violations"].get<int>(), 0);
   EXPECT_TRUE(fs::exists(out / "trajectory.csv"));
   EXPECT_NE(r.out.find("INFEASIBLE"), std::string::npos);
+}
+
+// A Y-shaped tube (three free edges, refused before multi-branch planning): three sub-paths in
+// build order, trunk first, numbered in the path column, each an unbroken spiral.
+TEST(CliPlan, YTubeIsPlannedAsSubPathsTrunkFirst)
+{
+  TempDir dir;
+  YTube y;
+  y.top = 150.0;
+  y.cell = 1.5;
+  writeMesh(y.mesh(), dir / "y.stl");
+  const auto out = dir / "plan";
+  const CliRun r = runCli({"plan", (dir / "y.stl").string(), "-o", out.string(), "--points-per-rev", "120"});
+  ASSERT_TRUE(r.exitCode == 0 || r.exitCode == 4) << r.err << r.out;
+  EXPECT_NE(r.out.find("multi-branch part"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("3 sub-paths"), std::string::npos) << r.out;
+  const auto report = readJson(out / "report.json");
+  EXPECT_EQ(report["part_type"], "multi_branch");
+  ASSERT_EQ(report["n_paths"], 3);
+  std::string header;
+  const auto rows = readTrajectory(out / "trajectory.csv", &header);
+  ASSERT_EQ(rows.size(), report["n_points"].get<size_t>());
+  std::vector<size_t> count(3, 0);
+  for (size_t i = 0; i < rows.size(); ++i) {
+    ASSERT_GE(rows[i].path, 0);
+    ASSERT_LT(rows[i].path, 3);
+    ++count[static_cast<size_t>(rows[i].path)];
+    if (i == 0) continue;
+    ASSERT_GE(rows[i].path, rows[i - 1].path);  // sub-paths one after the other
+    if (rows[i].path == rows[i - 1].path) {
+      EXPECT_LT((rows[i].p - rows[i - 1].p).norm(), 3.0) << "row " << i;
+    }
+  }
+  for (size_t k = 0; k < 3; ++k) {
+    EXPECT_EQ(count[k], report["paths"][k]["n_points"].get<size_t>());
+    EXPECT_EQ(report["paths"][k]["role"], k == 0 ? "trunk" : "branch");
+  }
+  EXPECT_LT(rows.front().p.z(), 2.2);  // the trunk starts on the substrate
+  EXPECT_NEAR(rows.back().p.z(), 150.0, 1e-6);
 }
 
 TEST(CliPlan, BadSettingsAreRejectedBeforeAnythingIsWritten)

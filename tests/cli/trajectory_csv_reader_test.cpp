@@ -25,6 +25,7 @@ Trajectory awkwardTrajectory()
     p.travelSpeed = 5.0 + 1.0 / 3.0;
     p.wireFeed = 2300.0 / 60.0 + 0.01 * i;
     p.arcOn = i != 49;
+    p.path = i / 20;
     t.points.push_back(p);
   }
   return t;
@@ -47,6 +48,33 @@ TEST(TrajectoryCsvReader, ReadsBackWhatThePlanWrote)
     EXPECT_EQ(a.travelSpeed, b.travelSpeed);
     EXPECT_NEAR(a.wireFeed, b.wireFeed, 1e-12 * a.wireFeed);  // through m/min and back
     EXPECT_EQ(a.arcOn, b.arcOn);
+    EXPECT_EQ(a.path, b.path);
+  }
+  EXPECT_EQ(back.points.back().path, 2);
+}
+
+// Plans written before sub-paths existed have no path column: they read as one path.
+TEST(TrajectoryCsvReader, ReadsFilesWithoutThePathColumnAsOnePath)
+{
+  std::string text = trajectoryCsv(awkwardTrajectory());
+  std::string old;
+  size_t pos = 0;
+  while (pos < text.size()) {
+    const size_t end = text.find('\n', pos);
+    std::string line = text.substr(pos, end - pos);
+    line.erase(line.rfind(','));  // drop the last column
+    old += line + "\n";
+    pos = end + 1;
+  }
+  ASSERT_EQ(old.substr(0, old.find('\n')),
+            "index,x,y,z,nx,ny,nz,tx,ty,tz,bx,by,bz,rev,gen,height,ts,wfs,arc");
+  const Trajectory back = trajectoryFromCsv(old);
+  const Trajectory t = awkwardTrajectory();
+  ASSERT_EQ(back.size(), t.size());
+  for (size_t i = 0; i < t.size(); ++i) {
+    EXPECT_EQ(back.points[i].position, t.points[i].position);
+    EXPECT_EQ(back.points[i].arcOn, t.points[i].arcOn);
+    EXPECT_EQ(back.points[i].path, 0);
   }
 }
 
@@ -73,6 +101,11 @@ TEST(TrajectoryCsvReader, BadFilesNameTheLine)
   const size_t second = skipped.find('\n', skipped.find('\n') + 1) + 1;
   skipped.erase(second, skipped.find('\n', second) + 1 - second);
   expectLine(skipped, "index");
+  std::string badPath = good;
+  const size_t row2 = badPath.find('\n') + 1;
+  const size_t rowEnd = badPath.find('\n', row2);
+  badPath.replace(badPath.rfind(',', rowEnd) + 1, rowEnd - badPath.rfind(',', rowEnd) - 1, "0.5");
+  expectLine(badPath, "sub-path");
 }
 
 }  // namespace

@@ -2,6 +2,8 @@
 
 #include <chrono>
 
+#include "spira/base/error.h"
+
 #include "spira/motion/motion_solver.h"
 #include "spira/pipeline/plan_motion.h"
 
@@ -15,6 +17,12 @@ ExportOutcome exportTrajectory(const PluginRegistry& registry, const Trajectory&
   const ParamSet params = job.exporterParams.withDefaults(exporter.schema());
   exporter.schema().validate(params);
 
+  for (const TrajectoryPoint& p : planned.points)
+    if (p.path != planned.points.front().path)
+      throw InputError(
+          "this plan has several sub-paths (a multi-branch part); a robot program with one arc "
+          "start and stop per sub-path and travel moves between them is not written yet",
+          "export each branch as its own part, or plan a mono-branch part");
   ExportOutcome out;
   SubProgress prepProgress(progress, 0.0, 0.4, "path preparation");
   const PreparedTrajectory prepared = prepareTrajectory(planned, job.prep, prepProgress);

@@ -37,20 +37,23 @@ void refuseDefects(const MeshReport& report)
 }  // namespace
 
 PartTopology findPartTopology(const MeshReport& report, const TriangleMesh& mesh, double substrateZ,
-                              int lowerOverride)
+                              int lowerOverride, bool allowBranches)
 {
   refuseDefects(report);
   if (report.componentCount != 1)
     throw InputError("the part has " + std::to_string(report.componentCount) + " separate pieces",
                      "import one thin-walled part at a time");
   const auto& loops = report.boundaryLoops;
-  if (loops.size() != 1 && loops.size() != 2)
+  if (loops.empty() || (loops.size() > 2 && !allowBranches))
     throw InputError(
         "the part cannot be planned: " + report.classReason,
         "Spira plans walls with one free edge on the substrate (closed parts) or two (open parts); "
         "fill holes in the mesh tool");
   PartTopology t;
-  t.partClass = loops.size() == 2 ? PartClass::Open : PartClass::Closed;
+  t.freeEdgeCount = loops.size();
+  t.branched = loops.size() > 2;
+  t.partClass =
+      t.branched ? PartClass::Unsupported : (loops.size() == 2 ? PartClass::Open : PartClass::Closed);
   if (lowerOverride >= static_cast<int>(loops.size()))
     throw InputError("lower boundary " + std::to_string(lowerOverride) + " does not exist (the part has " +
                          std::to_string(loops.size()) + ")",

@@ -19,12 +19,67 @@ void putVec(std::string& out, const Vec3& v)
 
 constexpr double kMmPerSecondToMetresPerMinute = 60.0 / 1000.0;
 
+const char* partTypeName(PartClass c)
+{
+  return c == PartClass::Open ? "open" : "closed";
+}
+
+nlohmann::json point(const Vec3& p)
+{
+  return nlohmann::json::array({p.x(), p.y(), p.z()});
+}
+
+nlohmann::json pathJson(const PathSummary& p)
+{
+  const SpiralReport& s = p.spiral;
+  return {{"path", p.path},
+          {"parent", p.parent},
+          {"depth", p.depth},
+          {"role", p.trunk ? "trunk" : "branch"},
+          {"part_type", partTypeName(p.partClass)},
+          {"base_level", p.baseLevel},
+          {"area_mm2", p.area},
+          {"first_point", p.firstPoint},
+          {"n_points", p.pointCount},
+          {"n_generatrices", p.generatrices},
+          {"generatrix_length_min", s.generatrixLengthMin},
+          {"generatrix_length_max", s.generatrixLengthMax},
+          {"n_revolutions", s.nRevolutions},
+          {"height_min", s.heightMin},
+          {"height_max", s.heightMax},
+          {"height_mean", s.heightMean},
+          {"feasible", p.feasible()},
+          {"violations", s.violations.size()},
+          {"path_length", s.pathLength},
+          {"max_jump", s.maxJump},
+          {"build_time_s", p.process.buildTime},
+          {"closure_point", p.hasClosure ? point(p.closure.point) : nlohmann::json(nullptr)}};
+}
+
+nlohmann::json branchingJson(const BranchingSummary& b)
+{
+  nlohmann::json saddles = nlohmann::json::array();
+  for (const BranchSaddle& s : b.saddles)
+    saddles.push_back({{"below_path", s.piece},
+                       {"level", s.level},
+                       {"position", point(s.position)},
+                       {"branches", s.branches},
+                       {"trunk_top_level", s.trunkTop},
+                       {"branch_base_level", s.branchBase},
+                       {"gap_area_mm2", s.gapArea},
+                       {"bisections", s.bisections}});
+  return {{"saddles", saddles},
+          {"junction_gap_mm", b.junctionGap},
+          {"junction_gap_area_mm2", b.junctionGapArea},
+          {"depth_limited", b.depthLimited}};
+}
+
 }  // namespace
 
 std::string trajectoryCsv(const Trajectory& trajectory)
 {
-  std::string out = "index,x,y,z,nx,ny,nz,tx,ty,tz,bx,by,bz,rev,gen,height,ts,wfs,arc\n";
-  out.reserve(out.size() + trajectory.size() * 220);
+  std::string out = "index,x,y,z,nx,ny,nz,tx,ty,tz,bx,by,bz,rev,gen,height,ts,wfs,arc,path\n";
+  out.reserve(out.size() + trajectory.size() * 224);
   for (size_t i = 0; i < trajectory.size(); ++i) {
     const TrajectoryPoint& p = trajectory.points[i];
     appendNumber(out, static_cast<long long>(i));
@@ -42,7 +97,9 @@ std::string trajectoryCsv(const Trajectory& trajectory)
     appendNumber(out, p.travelSpeed);
     out += ',';
     appendNumber(out, p.wireFeed * kMmPerSecondToMetresPerMinute);
-    out += p.arcOn ? ",1\n" : ",0\n";
+    out += p.arcOn ? ",1," : ",0,";
+    appendNumber(out, static_cast<long long>(p.path));
+    out += '\n';
   }
   return out;
 }
@@ -51,7 +108,7 @@ nlohmann::json planReportJson(const PlanOutput& plan, const std::string& strateg
 {
   const SpiralReport& s = plan.spiral.report;
   nlohmann::json j;
-  j["part_type"] = plan.topology.partClass == PartClass::Open ? "open" : "closed";
+  j["part_type"] = plan.branching ? "multi_branch" : partTypeName(plan.topology.partClass);
   j["strategy"] = strategy;
   j["field"] = plan.fieldKind;
   j["n_generatrices"] = plan.generatrices.lines.size();
@@ -113,6 +170,11 @@ nlohmann::json planReportJson(const PlanOutput& plan, const std::string& strateg
   timings["total"] = total;
   j["timings_s"] = timings;
   j["warnings"] = plan.warnings;
+  j["n_paths"] = plan.paths.empty() ? size_t{1} : plan.paths.size();
+  nlohmann::json paths = nlohmann::json::array();
+  for (const PathSummary& p : plan.paths) paths.push_back(pathJson(p));
+  j["paths"] = paths;
+  if (plan.branching) j["branching"] = branchingJson(*plan.branching);
   return j;
 }
 

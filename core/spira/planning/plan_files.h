@@ -10,12 +10,15 @@
 namespace spira {
 
 // The trajectory as CSV, one row per point, header
-//   index,x,y,z,nx,ny,nz,tx,ty,tz,bx,by,bz,rev,gen,height,ts,wfs,arc
-// (mm; unit vectors n, t, b; deposit height mm; TS mm/s; WFS m/min; arc 1 while depositing).
+//   index,x,y,z,nx,ny,nz,tx,ty,tz,bx,by,bz,rev,gen,height,ts,wfs,arc,path
+// (mm; unit vectors n, t, b; deposit height mm; TS mm/s; WFS m/min; arc 1 while depositing; path:
+// the sub-path, 0 for a mono-branch part, numbered in build order on a multi-branch one, where the
+// arc stops at the end of each sub-path and starts again at the next).
 // Numbers are written in the shortest form that reads back to the same double.
 std::string trajectoryCsv(const Trajectory& trajectory);
 
-// The plan report (report.json): the summary keys of the CLI contract plus details.
+// The plan report (report.json): the summary keys of the CLI contract plus details, "n_paths" and
+// one summary per sub-path under "paths" (and "branching" for a multi-branch part).
 nlohmann::json planReportJson(const PlanOutput& plan, const std::string& strategy);
 
 // Writes DIR/trajectory.csv and DIR/report.json, each atomically.

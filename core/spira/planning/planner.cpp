@@ -1,31 +1,19 @@
 #include "spira/planning/planner.h"
 
-#include <chrono>
+#include <algorithm>
 
 #include "spira/base/error.h"
 #include "spira/base/units.h"
+#include "spira/contour/branch_levels.h"
 #include "spira/field/harmonic_field.h"
 #include "spira/field/heat_distance.h"
 #include "spira/path/spiral_builder.h"
+#include "spira/planning/branch_plan.h"
 #include "spira/planning/plan_schemas.h"
+#include "spira/planning/stage_clock.h"
 
 namespace spira {
 namespace {
-
-class StageClock {
- public:
-  explicit StageClock(StageTimings& timings) : timings_(timings) {}
-  void lap(const std::string& stage)
-  {
-    const auto now = std::chrono::steady_clock::now();
-    timings_.emplace_back(stage, std::chrono::duration<double>(now - last_).count());
-    last_ = now;
-  }
-
- private:
-  StageTimings& timings_;
-  std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
-};
 
 ParamSet paramsFor(const PlanRequest& r, const std::string& section)
 {
@@ -33,37 +21,45 @@ ParamSet paramsFor(const PlanRequest& r, const std::string& section)
   return it == r.params.end() ? ParamSet() : it->second;
 }
 
-}  // namespace
+struct Settings {
+  SpiralSettings spiral;
+  ProcessSettings process;
+  const DecomposerPlugin* decomposer = nullptr;
+  ParamSet decomposerParams;
+};
 
-PlanOutput planPart(const PluginRegistry& registry, const PlanRequest& request, Progress& progress)
+// Settings first: a contradictory window is reported before any computation.
+Settings settingsFor(const PluginRegistry& registry, const PlanRequest& request)
 {
-  // Settings first: a contradictory window is reported before any computation.
-  SpiralSettings spiralSettings = spiralSettingsFrom(paramsFor(request, "spiral"));
-  const ProcessSettings processSettings = processSettingsFrom(paramsFor(request, "process"));
-  if (spiralSettings.minRevolutionLength <= 0.0)
-    spiralSettings.minRevolutionLength = kPi * processSettings.beadWidth;
-  const DecomposerPlugin& decomposer = registry.decomposer(request.decomposerId);
-  const ParamSet decomposerParams =
-      paramsFor(request, request.decomposerId).withDefaults(decomposer.schema());
-  decomposer.schema().validate(decomposerParams);
+  Settings s;
+  s.spiral = spiralSettingsFrom(paramsFor(request, "spiral"));
+  s.process = processSettingsFrom(paramsFor(request, "process"));
+  if (s.spiral.minRevolutionLength <= 0.0) s.spiral.minRevolutionLength = kPi * s.process.beadWidth;
+  s.decomposer = &registry.decomposer(request.decomposerId);
+  s.decomposerParams = paramsFor(request, request.decomposerId).withDefaults(s.decomposer->schema());
+  s.decomposer->schema().validate(s.decomposerParams);
+  return s;
+}
 
-  PlanOutput out;
-  StageClock clock(out.timings);
-  out.topology =
-      findPartTopology(request.report, request.mesh, request.substrateZ, request.lowerLoopOverride);
-  const bool open = out.topology.partClass == PartClass::Open;
-  clock.lap("topology");
-
-  if (open) {
-    SubProgress p(progress, 0.0, 0.3, "harmonic field");
+void computeField(const PlanRequest& request, PlanOutput& out, Progress& progress)
+{
+  SubProgress p(
+      progress, 0.0, 0.3,
+      out.topology.partClass == PartClass::Open ? "harmonic field" : "geodesic distance from the base");
+  if (out.topology.partClass == PartClass::Open) {
     out.fieldKind = "harmonic";
     out.field = harmonicField(request.mesh, out.topology.lower.vertices, out.topology.upper->vertices, p);
-    clock.lap("field");
   } else {
-    SubProgress p(progress, 0.0, 0.3, "geodesic distance from the base");
     out.fieldKind = "geodesic_distance";
     out.field = heatGeodesicDistance(request.mesh, out.topology.lower.vertices, HeatDistanceOptions{}, p);
-    clock.lap("field");
+  }
+}
+
+// Closure point, generatrices, spiral and process channels of a part whose field is computed.
+void finishMonoBranch(const PluginRegistry& registry, const PlanRequest& request, const Settings& settings,
+                      PlanOutput& out, StageClock& clock, Progress& progress)
+{
+  if (out.topology.partClass != PartClass::Open) {
     const ClosureFinderPlugin& finder = registry.closureFinder(request.closureFinderId);
     SubProgress cp(progress, 0.3, 0.35, "closure point");
     out.closure = finder.find({request.mesh, out.topology.lower.vertices, &out.field},
@@ -74,6 +70,7 @@ PlanOutput planPart(const PluginRegistry& registry, const PlanRequest& request, 
   }
   progress.checkCancel();
 
+  const DecomposerPlugin& decomposer = *settings.decomposer;
   DecomposeInput input{request.mesh,
                        out.topology.partClass,
                        out.topology.lower,
@@ -85,15 +82,15 @@ PlanOutput planPart(const PluginRegistry& registry, const PlanRequest& request, 
     throw InputError(decomposer.id() + " cannot plan this part: " + why,
                      "choose another strategy with --strategy");
   SubProgress dp(progress, 0.35, 0.8, "generatrices");
-  DecomposeResult decomposition = decomposer.decompose(input, decomposerParams, dp);
+  DecomposeResult decomposition = decomposer.decompose(input, settings.decomposerParams, dp);
   out.generatrices = std::move(decomposition.generatrices);
   out.warnings.insert(out.warnings.end(), decomposition.warnings.begin(), decomposition.warnings.end());
   clock.lap("decomposition");
 
   SubProgress sp(progress, 0.8, 0.95, "spiral");
-  out.spiral = buildSpiral(out.generatrices, spiralSettings, sp);
+  out.spiral = buildSpiral(out.generatrices, settings.spiral, sp);
   clock.lap("spiral");
-  out.process = applyProcess(out.spiral.trajectory, processSettings);
+  out.process = applyProcess(out.spiral.trajectory, settings.process);
   if (!out.process.violations.empty()) {
     const ProcessViolation& first = out.process.violations.front();
     out.warnings.push_back(
@@ -102,6 +99,90 @@ PlanOutput planPart(const PluginRegistry& registry, const PlanRequest& request, 
         std::to_string(first.point) + ", " + processViolationName(first.kind) + ")");
   }
   clock.lap("process");
+  out.paths = {wholePathSummary(out)};
+  out.paths[0].area = request.report.area;
+  progress.report(1.0, "done");
+}
+
+// Contours shorter than this are not branches: a wall narrower than the bead cannot stand on its
+// own, and loops under 5 % of the base are the noise of a field's extremum.
+double branchPerimeter(const PlanOutput& out, const Settings& settings)
+{
+  return std::max(kPi * settings.process.beadWidth, 0.05 * out.topology.lower.length);
+}
+
+}  // namespace
+
+PlanOutput planMonoBranch(const PluginRegistry& registry, const PlanRequest& request, Progress& progress)
+{
+  const Settings settings = settingsFor(registry, request);
+  PlanOutput out;
+  StageClock clock(out.timings);
+  out.topology =
+      findPartTopology(request.report, request.mesh, request.substrateZ, request.lowerLoopOverride);
+  clock.lap("topology");
+  computeField(request, out, progress);
+  clock.lap("field");
+  finishMonoBranch(registry, request, settings, out, clock, progress);
+  return out;
+}
+
+PlanOutput planPart(const PluginRegistry& registry, const PlanRequest& request, Progress& progress)
+{
+  const Settings settings = settingsFor(registry, request);
+  PlanOutput out;
+  StageClock clock(out.timings);
+  out.topology = findPartTopology(request.report, request.mesh, request.substrateZ, request.lowerLoopOverride,
+                                  /*allowBranches=*/true);
+  clock.lap("topology");
+  const double perimeter = branchPerimeter(out, settings);
+  bool branches = out.topology.branched;
+  // Branches show in the geodesic distance from the base (thesis §3.4.3): a mono-branch part has
+  // one contour per level. A closed part plans with that field; an open part's harmonic field
+  // cannot show them (a capped arm holds it nearly constant, with no saddle), so the distance is
+  // computed for it too.
+  std::vector<double> distance;
+  if (!branches) {
+    computeField(request, out, progress);
+    if (out.fieldKind != "geodesic_distance") {
+      SubProgress dp(progress, 0.3, 0.3, "geodesic distance from the base");
+      distance = heatGeodesicDistance(request.mesh, out.topology.lower.vertices, HeatDistanceOptions{}, dp);
+    }
+    const std::vector<double>& field = distance.empty() ? out.field : distance;
+    BranchScanOptions scan;
+    scan.minPerimeter = perimeter;
+    SubProgress bp(progress, 0.3, 0.3, "branches");
+    branches = findFirstBranchSplit(request.mesh, field, highestValueOn(out.topology.lower.vertices, field),
+                                    scan, bp)
+                   .found;
+    clock.lap("field");
+  }
+  if (!branches) {
+    finishMonoBranch(registry, request, settings, out, clock, progress);
+    return out;
+  }
+
+  BranchSplitOptions split;
+  split.minPerimeter = perimeter;
+  split.nominalHeight = settings.spiral.h;
+  const std::vector<double>* known =
+      !distance.empty() ? &distance : (out.fieldKind == "geodesic_distance" ? &out.field : nullptr);
+  SubProgress sp(progress, 0.0, 0.3, "branches");
+  BranchDecomposition pieces =
+      splitIntoMonoBranches(request.mesh, out.topology.lower.vertices, known, split, sp);
+  clock.lap("branches");
+  if (pieces.pieces.size() < 2) {
+    if (out.topology.branched)
+      throw InputError("the part cannot be planned: " + request.report.classReason +
+                           ", and its contours do not part into branches",
+                       "Spira plans walls with one free edge on the substrate (closed parts), two (open "
+                       "parts) or one free edge per branch; fill holes in the mesh tool");
+    finishMonoBranch(registry, request, settings, out, clock, progress);
+    return out;
+  }
+  SubProgress pp(progress, 0.3, 1.0, "sub-parts");
+  planBranchPieces(registry, request, std::move(pieces), out, pp);
+  clock.lap("sub-parts");
   progress.report(1.0, "done");
   return out;
 }

@@ -1,13 +1,16 @@
 #pragma once
 
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "spira/base/progress.h"
 #include "spira/path/process_model.h"
 #include "spira/path/spiral_report.h"
+#include "spira/planning/branch_split.h"
 #include "spira/planning/part_topology.h"
+#include "spira/planning/stage_clock.h"
 #include "spira/plugin/closure_finder.h"
 #include "spira/plugin/parameter.h"
 #include "spira/plugin/plugin_registry.h"
@@ -27,8 +30,33 @@ struct PlanRequest {
   std::map<std::string, ParamSet> params;
 };
 
-// Wall-clock seconds per stage, in pipeline order.
-using StageTimings = std::vector<std::pair<std::string, double>>;
+// One sub-path of a plan: a mono-branch sub-part of a multi-branch part, or the whole part.
+struct PathSummary {
+  int path = 0;
+  int parent = -1;  // the sub-path it is built on (-1: the substrate)
+  int depth = 0;    // splits between it and the base
+  bool trunk = true;
+  PartClass partClass = PartClass::Unsupported;  // of the sub-part: open, or closed (a capped branch)
+  double baseLevel = 0.0;                 // geodesic distance from the part's base to its lower edge, mm
+  double area = 0.0;                      // mm^2 of the part's surface it covers
+  size_t firstPoint = 0, pointCount = 0;  // its points in the plan's trajectory
+  std::string fieldKind;
+  bool hasClosure = false;
+  ClosureResult closure;
+  size_t generatrices = 0;
+  SpiralReport spiral;  // its own report: violation indices count from its first point
+  ProcessReport process;
+  std::vector<std::string> warnings;
+  bool feasible() const { return spiral.feasible; }
+};
+
+// How a multi-branch part was split (see branch_split.h).
+struct BranchingSummary {
+  std::vector<BranchSaddle> saddles;
+  double junctionGap = 0.0;      // mm of geodesic distance between a trunk's top and its branches' bases
+  double junctionGapArea = 0.0;  // mm^2 of surface in those gaps, not deposited
+  bool depthLimited = false;
+};
 
 struct PlanOutput {
   PartTopology topology;
@@ -41,6 +69,14 @@ struct PlanOutput {
   ProcessReport process;
   StageTimings timings;
   std::vector<std::string> warnings;
+  // The sub-paths in build order (each after the one it stands on); one for a mono-branch part.
+  // A multi-branch part's trajectory holds them one after the other, TrajectoryPoint::path
+  // numbering them; each is one continuous spiral with its own arc start and stop. Then `field` is
+  // the geodesic distance from the base the part was split with, `generatrices` all sub-parts'
+  // generatrices in path order, and `spiral.report` and `process` add the sub-paths up (counts and
+  // lengths summed, extremes over all, violations indexed in the whole trajectory).
+  std::vector<PathSummary> paths;
+  std::optional<BranchingSummary> branching;  // set for a multi-branch part
 
   // Within the process window (Eq. 3.6, and Eq. 3.15 on every point). Process-limit
   // violations do not make a plan infeasible: the speeds are clamped to the limits and each
@@ -51,8 +87,15 @@ struct PlanOutput {
 // Runs the CTPP pipeline: part topology, scalar field (harmonic for open parts; geodesic distance
 // from the base and the closure point for closed ones), decomposition into generatrices, the
 // continuous spiral with its start-up and deposit heights, and the process channels.
+// A multi-branch part (more than two free edges, or a field whose contours part into several
+// loops at least pi x bead width long) is split into mono-branch sub-parts (branch_split.h), each
+// planned on its own, trunk first (thesis §3.4.3).
 // Throws InputError/AlgorithmError for parts or settings it cannot plan; an infeasible plan is a
 // result (feasible() == false), not an error.
 PlanOutput planPart(const PluginRegistry& registry, const PlanRequest& request, Progress& progress);
+
+// The mono-branch pipeline alone, without looking for branches: what planPart runs on a part
+// that does not branch and on each sub-part of one that does.
+PlanOutput planMonoBranch(const PluginRegistry& registry, const PlanRequest& request, Progress& progress);
 
 }  // namespace spira

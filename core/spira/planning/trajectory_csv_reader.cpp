@@ -9,8 +9,10 @@
 namespace spira {
 namespace {
 
-constexpr const char* kHeader = "index,x,y,z,nx,ny,nz,tx,ty,tz,bx,by,bz,rev,gen,height,ts,wfs,arc";
-constexpr int kColumns = 19;
+constexpr const char* kHeader = "index,x,y,z,nx,ny,nz,tx,ty,tz,bx,by,bz,rev,gen,height,ts,wfs,arc,path";
+// Plans written before multi-branch parts had no path column: one path.
+constexpr const char* kSinglePathHeader = "index,x,y,z,nx,ny,nz,tx,ty,tz,bx,by,bz,rev,gen,height,ts,wfs,arc";
+constexpr int kMaxColumns = 20;
 
 }  // namespace
 
@@ -18,6 +20,7 @@ Trajectory trajectoryFromCsv(const std::string& text, const std::string& what)
 {
   Trajectory t;
   size_t pos = 0, lineNo = 0;
+  int columns = kMaxColumns;
   const auto fail = [&](const std::string& problem) -> void {
     throw InputError(what + " line " + std::to_string(lineNo) + ": " + problem,
                      "use the trajectory.csv that 'spira-cli plan' wrote, unedited");
@@ -30,13 +33,17 @@ Trajectory trajectoryFromCsv(const std::string& text, const std::string& what)
     ++lineNo;
     if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
     if (lineNo == 1) {
-      if (line != kHeader) fail("the header is not '" + std::string(kHeader) + "'");
+      if (line == kSinglePathHeader)
+        columns = kMaxColumns - 1;
+      else if (line != kHeader)
+        fail("the header is not '" + std::string(kHeader) + "'");
       continue;
     }
     if (line.empty()) continue;
-    double v[kColumns];
-    size_t col = 0, at = 0;
-    while (col < kColumns) {
+    double v[kMaxColumns] = {};
+    int col = 0;
+    size_t at = 0;
+    while (col < columns) {
       const size_t comma = std::min(line.find(',', at), line.size());
       const char* first = line.data() + at;
       const char* last = line.data() + comma;
@@ -47,8 +54,9 @@ Trajectory trajectoryFromCsv(const std::string& text, const std::string& what)
       at = comma + 1;
       if (comma == line.size()) break;
     }
-    if (col != kColumns || at <= line.size()) fail("expected " + std::to_string(kColumns) + " columns");
+    if (col != columns || at <= line.size()) fail("expected " + std::to_string(columns) + " columns");
     if (v[0] != static_cast<double>(t.points.size())) fail("the index is not the row number");
+    if (v[19] < 0 || v[19] != std::floor(v[19])) fail("the path is not a sub-path number");
     TrajectoryPoint p;
     p.position = Vec3(v[1], v[2], v[3]);
     p.normal = Vec3(v[4], v[5], v[6]);
@@ -60,6 +68,7 @@ Trajectory trajectoryFromCsv(const std::string& text, const std::string& what)
     p.travelSpeed = v[16];
     p.wireFeed = v[17] * 1000.0 / 60.0;
     p.arcOn = v[18] != 0.0;
+    p.path = static_cast<int>(v[19]);
     t.points.push_back(p);
   }
   if (lineNo == 0) fail("the file is empty");
