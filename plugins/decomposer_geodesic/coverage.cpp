@@ -94,12 +94,12 @@ CoverageResult fillCoverageGaps(std::vector<GeneratrixLine> lines, const FillInC
   const double unknown = std::numeric_limits<double>::quiet_NaN();
   std::vector<double> gap(lines.size(), unknown);  // gap[i]: between lines[i] and lines[i + 1]
   auto evaluate = [&] {
-    std::vector<size_t> todo;
+    std::vector<size_t> pending;
     for (size_t i = 0; i < gap.size(); ++i)
-      if (std::isnan(gap[i])) todo.push_back(i);
-    tbb::parallel_for(size_t(0), todo.size(), [&](size_t j) {
+      if (std::isnan(gap[i])) pending.push_back(i);
+    tbb::parallel_for(size_t(0), pending.size(), [&](size_t j) {
       progress.checkCancel();
-      const size_t i = todo[j];
+      const size_t i = pending[j];
       gap[i] = coverageGap(lines[i], lines[(i + 1) % lines.size()], context.locator).error;
     });
   };

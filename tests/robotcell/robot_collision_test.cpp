@@ -36,7 +36,7 @@ TEST(LinkShapes, KukaLinksComeWithTheirCollisionMeshesInMillimetres)
   for (const char* n : {"base_link", "link_1", "link_2", "link_3", "link_4", "link_5", "link_6"})
     EXPECT_NE(std::find(names.begin(), names.end(), n), names.end()) << n;
   for (const LinkShape& l : s.links) {
-    EXPECT_FALSE(l.placeholder);
+    EXPECT_FALSE(l.standInCube);
     if (l.link == "link_2") {
       // The upper arm spans A2 -> A3, 680 mm.
       Vec3 lo = Vec3::Constant(1e9), hi = -lo;
@@ -48,7 +48,7 @@ TEST(LinkShapes, KukaLinksComeWithTheirCollisionMeshesInMillimetres)
   }
 }
 
-TEST(LinkShapes, MissingMeshesGetAPlaceholderAndAWarning)
+TEST(LinkShapes, MissingMeshesGetAStandInCubeAndAWarning)
 {
   test::TempDir dir;
   std::ifstream in(robots() / "kuka_kr16_2" / "robot.urdf");
@@ -57,7 +57,7 @@ TEST(LinkShapes, MissingMeshesGetAPlaceholderAndAWarning)
   const RobotShapes s = readRobotShapes((dir / "robot.urdf").string(), "base_link", "tool0");
   EXPECT_FALSE(s.warnings.empty());
   ASSERT_FALSE(s.links.empty());
-  for (const LinkShape& l : s.links) EXPECT_TRUE(l.placeholder);
+  for (const LinkShape& l : s.links) EXPECT_TRUE(l.standInCube);
   EXPECT_NE(s.warnings.front().find("missing"), std::string::npos);
 }
 

@@ -147,7 +147,7 @@ RobotShapes readRobotShapes(const std::string& urdfPath, const std::string& base
       TriangleMesh piece;
       if (!geometryMesh(*c->geometry, dir, piece, shapes.warnings)) {
         piece = boxMesh(Vec3::Constant(100.0));
-        s.placeholder = true;
+        s.standInCube = true;
       }
       append(s.mesh, piece, poseOf(c->origin));
     }

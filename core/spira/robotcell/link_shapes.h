@@ -19,7 +19,7 @@ struct LinkShape {
   size_t joints = 0;
   TriangleMesh mesh;  // in the link frame
   std::unique_ptr<TriangleBvh> bvh;
-  bool placeholder = false;  // its mesh file was missing: a 100 mm cube stands in
+  bool standInCube = false;  // its mesh file was missing: a 100 mm cube stands in
 };
 
 struct RobotShapes {
@@ -29,7 +29,7 @@ struct RobotShapes {
 
 // Reads the collision geometry of every link of the URDF from `baseLink` along the chain to
 // `tipLink` (and the links fixed to them). Mesh paths are relative to the URDF's folder; STL meshes
-// are read (other formats and missing files get a placeholder cube and a warning, never an error:
+// are read (other formats and missing files get a 100 mm stand-in cube and a warning, never an error:
 // the cell still displays and plans). Throws InputError when the URDF does not parse.
 RobotShapes readRobotShapes(const std::string& urdfPath, const std::string& baseLink,
                             const std::string& tipLink);

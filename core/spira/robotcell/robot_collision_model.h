@@ -14,7 +14,7 @@ namespace spira {
 // The torch is checked against the deposit separately (collision/torch_collision_checker.h).
 class RobotCollisionModel {
  public:
-  // Reads the collision meshes of the cell's arm and positioner (missing meshes: a placeholder and
+  // Reads the collision meshes of the cell's arm and positioner (missing meshes: a stand-in cube and
   // a warning). `part` is the part's mesh in its own frame; a plate of `plateSize` (mm, x y z)
   // lies under the part frame's origin, its top at z = plateTopZ in the part frame.
   RobotCollisionModel(const RobotCell& cell, const TriangleMesh& part,
