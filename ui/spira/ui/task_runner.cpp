@@ -162,6 +162,12 @@ void TaskRunner::onThreadFinished()
     std::lock_guard<std::mutex> lock(shared_->mutex);
     out = shared_->outcome;
   }
+  // A Cancel pressed after the job finished but before its result reached the UI still wins: the
+  // user asked for nothing to change, and nothing has changed yet.
+  if (shared_->progress.cancelled() && out.status == TaskOutcome::Status::Succeeded) {
+    out = TaskOutcome();
+    out.status = TaskOutcome::Status::Cancelled;
+  }
   complete(out);
 }
 
