@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <random>
 
 #include "spira/collision/capsule_bvh.h"
@@ -129,6 +130,16 @@ TEST(Bvh, CapsuleQueriesWithKeyCutoffsEqualBruteForce)
     }
     EXPECT_EQ(bvh.intersects(torch, margin, keyEnd), !brute.empty()) << "query " << q;
     EXPECT_EQ(bvh.within(torch, margin, keyEnd), brute) << "query " << q;
+    // A hint (tried first) never changes the answer: none, a random capsule (often hidden by
+    // keyEnd or far away), or one that is hit; a hit leaves the hint on a capsule that is hit.
+    for (const uint32_t start : {CapsuleBvh::kAll, static_cast<uint32_t>(rng.uniform(0, 4000)),
+                                 brute.empty() ? CapsuleBvh::kAll : static_cast<uint32_t>(brute.back())}) {
+      uint32_t hint = start;
+      ASSERT_EQ(bvh.intersects(torch, margin, keyEnd, &hint), !brute.empty()) << "query " << q;
+      if (!brute.empty()) {
+        EXPECT_TRUE(std::binary_search(brute.begin(), brute.end(), size_t(hint))) << "query " << q;
+      }
+    }
     const NearestHit hit = bvh.nearest(torch, keyEnd);
     EXPECT_EQ(hit.found(), std::isfinite(bruteNearest));
     if (hit.found()) {

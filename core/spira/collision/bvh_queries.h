@@ -2,11 +2,13 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "spira/collision/basic_shapes.h"
 #include "spira/collision/box_ops.h"
 #include "spira/collision/bvh_tree.h"
+#include "spira/collision/capsule_bound.h"
 #include "spira/collision/gjk.h"
 #include "spira/collision/nearest_hit.h"
 
@@ -18,38 +20,58 @@ namespace spira::bvh_detail {
 // contain the inflation. Only primitives with key < keyEnd take part.
 
 // Inner nodes are also tested exactly (GJK against the node box): a tilted torch's own box is
-// loose, and the exact test prunes most of what the loose one lets through.
-inline bool nodeWithin(const BvhTree::Node& node, const ConvexShape& shape, const BoundingBox& reach,
-                       double margin, uint32_t keyEnd)
+// loose, and the exact test prunes most of what the loose one lets through. The shape's bounding
+// capsule (capsule_bound.h) first rejects, without GJK, nodes that are clearly beyond the margin.
+inline bool nodeWithin(const BvhTree::Node& node, const ConvexShape& shape, const CapsuleBound& capsule,
+                       const BoundingBox& reach, double margin, uint32_t keyEnd)
 {
-  if (node.minKey >= keyEnd || !boxesOverlap(reach, node.box)) return false;
+  if (node.minKey >= keyEnd || !boxesOverlap(reach, node.box) || boxBeyond(capsule, node.box, margin))
+    return false;
   return node.leaf() || gjkWithin(shape, BoxShape(node.box), margin);
 }
 
-template <class Keys, class Inflation, class Core>
+// `beyond(p, capsule, margin)` may prove primitive p farther than margin + its inflation from the
+// shape's bounding capsule (cheaper than GJK); return false where it cannot tell.
+// `hint`, when given, names a primitive to try before the search (kNoHint: none) and receives the
+// one found: a caller asking about nearly the same shape again (the torch at a slightly different
+// tilt) usually hits the same primitive and skips the search. The answer does not depend on it.
+constexpr uint32_t kNoHint = std::numeric_limits<uint32_t>::max();
+
+template <class Keys, class Inflation, class Core, class Beyond>
 bool anyWithin(const BvhTree& tree, const ConvexShape& shape, double margin, uint32_t keyEnd, Keys key,
-               Inflation inflation, Core core)
+               Inflation inflation, Core core, Beyond beyond, uint32_t* hint = nullptr)
 {
   const BoundingBox reach = inflated(shape.bounds(), margin);
+  const CapsuleBound capsule(shape);
+  const auto within = [&](uint32_t p) {
+    if (key(p) >= keyEnd || beyond(p, capsule, margin)) return false;
+    return gjkWithin(shape, core(p), margin + inflation(p));
+  };
+  if (hint && *hint < tree.order().size() && within(*hint)) return true;
   return tree.search(
-      [&](const BvhTree::Node& node) { return nodeWithin(node, shape, reach, margin, keyEnd); },
+      [&](const BvhTree::Node& node) { return nodeWithin(node, shape, capsule, reach, margin, keyEnd); },
       [&](uint32_t p) {
-        if (key(p) >= keyEnd) return false;
-        return gjkWithin(shape, core(p), margin + inflation(p));
+        if (!within(p)) return false;
+        if (hint) *hint = p;
+        return true;
       });
 }
 
-template <class Keys, class Inflation, class Core>
+template <class Keys, class Inflation, class Core, class Beyond>
 std::vector<size_t> allWithin(const BvhTree& tree, const ConvexShape& shape, double margin, uint32_t keyEnd,
-                              Keys key, Inflation inflation, Core core)
+                              Keys key, Inflation inflation, Core core, Beyond beyond)
 {
   const BoundingBox reach = inflated(shape.bounds(), margin);
+  const CapsuleBound capsule(shape);
   std::vector<size_t> hits;
-  tree.search([&](const BvhTree::Node& node) { return nodeWithin(node, shape, reach, margin, keyEnd); },
-              [&](uint32_t p) {
-                if (key(p) < keyEnd && gjkWithin(shape, core(p), margin + inflation(p))) hits.push_back(p);
-                return false;
-              });
+  tree.search(
+      [&](const BvhTree::Node& node) { return nodeWithin(node, shape, capsule, reach, margin, keyEnd); },
+      [&](uint32_t p) {
+        if (key(p) < keyEnd && !beyond(p, capsule, margin) &&
+            gjkWithin(shape, core(p), margin + inflation(p)))
+          hits.push_back(p);
+        return false;
+      });
   std::sort(hits.begin(), hits.end());
   return hits;
 }

@@ -8,6 +8,19 @@
 
 namespace spira {
 
+namespace {
+
+// Capsule p is provably beyond the margin of the query shape's bounding capsule.
+auto beyond(const std::vector<Capsule>& capsules)
+{
+  return [&capsules](uint32_t p, const bvh_detail::CapsuleBound& bound, double margin) {
+    const Capsule& c = capsules[p];
+    return bvh_detail::capsuleBeyond(bound, c.a, c.b, c.radius, margin);
+  };
+}
+
+}  // namespace
+
 CapsuleBvh::CapsuleBvh(std::vector<Capsule> capsules, std::vector<uint32_t> keys)
     : capsules_(std::move(capsules)), keys_(std::move(keys))
 {
@@ -29,12 +42,12 @@ CapsuleBvh::CapsuleBvh(std::vector<Capsule> capsules, std::vector<uint32_t> keys
   tree_ = BvhTree(boxes, keys_);
 }
 
-bool CapsuleBvh::intersects(const ConvexShape& shape, double margin, uint32_t keyEnd) const
+bool CapsuleBvh::intersects(const ConvexShape& shape, double margin, uint32_t keyEnd, uint32_t* hint) const
 {
   return bvh_detail::anyWithin(
       tree_, shape, margin, keyEnd, [&](uint32_t p) { return key(p); },
       [&](uint32_t p) { return capsules_[p].radius; },
-      [&](uint32_t p) { return SegmentShape(capsules_[p].a, capsules_[p].b); });
+      [&](uint32_t p) { return SegmentShape(capsules_[p].a, capsules_[p].b); }, beyond(capsules_), hint);
 }
 
 NearestHit CapsuleBvh::nearest(const ConvexShape& shape, uint32_t keyEnd, double maxDistance,
@@ -51,7 +64,7 @@ std::vector<size_t> CapsuleBvh::within(const ConvexShape& shape, double margin, 
   return bvh_detail::allWithin(
       tree_, shape, margin, keyEnd, [&](uint32_t p) { return key(p); },
       [&](uint32_t p) { return capsules_[p].radius; },
-      [&](uint32_t p) { return SegmentShape(capsules_[p].a, capsules_[p].b); });
+      [&](uint32_t p) { return SegmentShape(capsules_[p].a, capsules_[p].b); }, beyond(capsules_));
 }
 
 }  // namespace spira

@@ -33,8 +33,11 @@ class CapsuleBvh {
   uint32_t key(size_t i) const { return keys_.empty() ? static_cast<uint32_t>(i) : keys_[i]; }
   const BvhTree& tree() const { return tree_; }
 
-  // Whether a visible capsule comes within `margin` mm of the shape.
-  bool intersects(const ConvexShape& shape, double margin = 0.0, uint32_t keyEnd = kAll) const;
+  // Whether a visible capsule comes within `margin` mm of the shape. `hint` (optional, start it at
+  // kAll) is a capsule to try first and receives the one found; repeated queries about nearly the
+  // same shape pass the same hint to skip most of the search. The answer never depends on it.
+  bool intersects(const ConvexShape& shape, double margin = 0.0, uint32_t keyEnd = kAll,
+                  uint32_t* hint = nullptr) const;
   // The nearest visible capsule no farther than `maxDistance` mm (surface to surface). With `slack` > 0
   // the answer may be up to `slack` mm farther than the true nearest (much faster on near-ties).
   NearestHit nearest(const ConvexShape& shape, uint32_t keyEnd = kAll,

@@ -17,6 +17,10 @@ class ConvexShape {
   virtual Vec3 anyPoint() const = 0;
   // An axis-aligned box holding the shape (the broad phase).
   virtual BoundingBox bounds() const = 0;
+  // A capsule (segment [a, b] inflated by `radius`) holding the shape, when the shape has a tight
+  // one: the hierarchies then reject far nodes and primitives without GJK (a long tilted torch has
+  // a loose axis-aligned box but a tight capsule). False: none, only bounds() is used.
+  virtual bool boundingCapsule(Vec3& /*a*/, Vec3& /*b*/, double& /*radius*/) const { return false; }
 };
 
 }  // namespace spira

@@ -42,8 +42,15 @@ unsigned TorchCollisionChecker::hits(size_t i, double tiltRad) const
 
 bool TorchCollisionChecker::collides(size_t i, double tiltRad) const
 {
+  uint32_t none = CapsuleBvh::kAll;
+  return collides(i, tiltRad, none);
+}
+
+bool TorchCollisionChecker::collides(size_t i, double tiltRad, uint32_t& depositHint) const
+{
   const TorchSolid solid = torchAt(i, tiltRad);
-  if (deposit_.capsules().intersects(solid, torch_.clearance, deposit_.visibleEnd(i))) return true;
+  if (deposit_.capsules().intersects(solid, torch_.clearance, deposit_.visibleEnd(i), &depositHint))
+    return true;
   return scene_.hits(solid, torch_.clearance) != 0;
 }
 

@@ -31,6 +31,10 @@ class TorchCollisionChecker {
   unsigned hits(size_t i, double tiltRad = 0.0) const;
   // Same answer as hits() != 0, stopping at the first hit.
   bool collides(size_t i, double tiltRad = 0.0) const;
+  // The same, for a series of queries at one point (a tilt search): `depositHint` starts at
+  // CapsuleBvh::kAll and carries the deposit segment last hit to the next query, which tries it
+  // first. Same answers, a fraction of the cost while the torch still collides.
+  bool collides(size_t i, double tiltRad, uint32_t& depositHint) const;
   // Distance from the torch to the nearest deposit, substrate or obstacle, capped at maxDistance
   // (0 when touching or overlapping), accurate to `slack` mm (an exact answer, slack 0, costs several
   // times more: the nozzle sits over many nearly equidistant beads).

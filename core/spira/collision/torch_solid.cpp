@@ -1,5 +1,6 @@
 #include "spira/collision/torch_solid.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace spira {
@@ -44,6 +45,14 @@ BoundingBox TorchSolid::bounds() const
     box.extend(centers_[k] + radii_[k] * spread);
   }
   return box;
+}
+
+bool TorchSolid::boundingCapsule(Vec3& a, Vec3& b, double& radius) const
+{
+  a = centers_[0];
+  b = centers_[2];
+  radius = std::max({radii_[0], radii_[1], radii_[2]});
+  return true;
 }
 
 double TorchSolid::heightAbove(const Vec3& point, const Vec3& normal) const

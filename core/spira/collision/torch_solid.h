@@ -18,6 +18,8 @@ class TorchSolid final : public ConvexShape {
   Vec3 support(const Vec3& direction) const override;
   Vec3 anyPoint() const override { return 0.5 * (centers_[0] + centers_[2]); }
   BoundingBox bounds() const override;
+  // The axis from the tip to the top, inflated by the largest radius.
+  bool boundingCapsule(Vec3& a, Vec3& b, double& radius) const override;
 
   // Unit axis from the nozzle tip into the body (-z of the TCP frame, the planned build direction b).
   const Vec3& axis() const { return axis_; }

@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <limits>
+#include <string>
+
+#include "spira/base/error.h"
 
 namespace spira {
 
@@ -21,6 +24,9 @@ PathTrack trackPath(const ArmIk& ik, const std::vector<Transform>& baseTcp, cons
   track.configuration = configuration ? *configuration : ik.configurationOf(seed);
   track.poses.resize(baseTcp.size());
   track.minLimitMargin = baseTcp.empty() ? 0.0 : std::numeric_limits<double>::infinity();
+  if (!flangeTcp.matrix().allFinite() || !seed.allFinite())
+    throw InputError("the tool frame or the seed joints of the path hold NaN or infinity",
+                     "check the cell's tool (TCP) and start pose");
   const Transform tcpFlange = flangeTcp.inverse();
   JointVector previous = seed;
   for (size_t i = 0; i < baseTcp.size(); ++i) {
@@ -28,6 +34,10 @@ PathTrack trackPath(const ArmIk& ik, const std::vector<Transform>& baseTcp, cons
       progress.checkCancel();
       progress.report(static_cast<double>(i) / static_cast<double>(baseTcp.size()), "inverse kinematics");
     }
+    // Named by index here: ArmIk::solve would refuse it too, but could not say which pose it was.
+    if (!baseTcp[i].matrix().allFinite())
+      throw InputError("path pose " + std::to_string(i) + " holds NaN or infinity",
+                       "check point " + std::to_string(i) + " of the trajectory (position and frame)");
     TrackedPose& pose = track.poses[i];
     const std::optional<IkSolution> s = ik.solve(baseTcp[i] * tcpFlange, track.configuration, previous);
     pose.reachable = s && s->positionError < kReachPositionTol && s->orientationError < kReachOrientationTol;

@@ -31,7 +31,8 @@ struct PathTrack {
 // frame (tool0): every pose in ONE configuration (given, or that of `seed`), each joint on the
 // 2 pi branch nearest the previous pose's (the seed's for the first), so joints 1, 4 and 6 unwind
 // continuously and the arm never flips inside the path. A pose the configuration cannot reach is
-// reported and skipped (its q repeats the previous one). Calls progress.checkCancel().
+// reported and skipped (its q repeats the previous one). Calls progress.checkCancel(). Throws
+// InputError naming the first pose that holds NaN or infinity (nothing is solved then).
 PathTrack trackPath(const ArmIk& ik, const std::vector<Transform>& baseTcp, const Transform& flangeTcp,
                     const JointVector& seed, const std::optional<ArmConfiguration>& configuration,
                     Progress& progress);
