@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "path_straightening.h"
 #include "spira/base/error.h"
 #include "submesh_geodesics.h"
 #include "surface_locator.h"
@@ -267,6 +268,8 @@ ExactPath SubmeshGeodesics::pathTo(const SurfacePoint& p) const
     return path;
   }
   std::reverse(path.points.begin(), path.points.end());
+  const TriangleMesh& full = impl_->full;
+  straightenPath(path, path.length, [&full](int v) { return full.vertices[static_cast<size_t>(v)]; });
   return path;
 }
 

@@ -129,6 +129,8 @@ TEST(GeodesicOpen, LengthsEqualTheExactDistanceMeasuredFromTheOtherEnd)
   auto top = [&](double alpha) { return 60.0 + 8.0 * std::sin(2.0 * alpha); };
   const Part part = makePart(makeTube([&](double al, double z) { return shape.radius(al, z); }, top, 96, 36));
   const GeodesicDecomposition d = decompose(part, 24);
+  // Eq. 3.8-3.9: the fill-ins closed every gap between neighbours to under the tolerance.
+  EXPECT_LE(d.stats.coverageError, GeodesicOptions().coverageTolerance);
   std::vector<int> all(part.mesh.faceCount());
   for (size_t f = 0; f < all.size(); ++f) all[f] = int(f);
   for (size_t i = 0; i < d.generatrices.lines.size(); i += 6) {

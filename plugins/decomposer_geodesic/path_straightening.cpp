@@ -1,0 +1,81 @@
+#include "path_straightening.h"
+
+#include <cmath>
+
+namespace spira::geodesic {
+
+namespace {
+
+double polylineLength(const std::vector<PathPoint>& points)
+{
+  double length = 0.0;
+  for (size_t k = 1; k < points.size(); ++k) length += (points[k].position - points[k - 1].position).norm();
+  return length;
+}
+
+bool onEdge(const PathPoint& p)
+{
+  return p.vertices[0] >= 0 && p.vertices[1] >= 0 && p.vertices[2] < 0;
+}
+
+// The t in [0, 1] minimising |a - x(t)| + |x(t) - b|, x(t) = (1 - t) p + t q: golden section on a
+// convex function.
+double bestCrossing(const Vec3& a, const Vec3& b, const Vec3& p, const Vec3& q)
+{
+  const auto f = [&](double t) {
+    const Vec3 x = (1.0 - t) * p + t * q;
+    return (a - x).norm() + (x - b).norm();
+  };
+  const double g = 0.5 * (std::sqrt(5.0) - 1.0);
+  double lo = 0.0, hi = 1.0;
+  double x1 = hi - g * (hi - lo), x2 = lo + g * (hi - lo);
+  double f1 = f(x1), f2 = f(x2);
+  for (int it = 0; it < 80 && hi - lo > 1e-14; ++it) {
+    if (f1 <= f2) {
+      hi = x2;
+      x2 = x1;
+      f2 = f1;
+      x1 = hi - g * (hi - lo);
+      f1 = f(x1);
+    } else {
+      lo = x1;
+      x1 = x2;
+      f1 = f2;
+      x2 = lo + g * (hi - lo);
+      f2 = f(x2);
+    }
+  }
+  const double t = 0.5 * (lo + hi);
+  // The ends themselves: golden section never evaluates them.
+  if (f(0.0) <= f(t)) return f(1.0) < f(0.0) ? 1.0 : 0.0;
+  return f(1.0) < f(t) ? 1.0 : t;
+}
+
+}  // namespace
+
+double straightenPath(ExactPath& path, double exactLength, const std::function<Vec3(int)>& vertexPosition,
+                      int maxSweeps)
+{
+  std::vector<PathPoint>& pts = path.points;
+  double length = polylineLength(pts);
+  if (pts.size() < 3 || !(exactLength > 0.0)) return length;
+  for (int sweep = 0; sweep < maxSweeps && length > exactLength * (1.0 + 1e-9); ++sweep) {
+    for (size_t k = 1; k + 1 < pts.size(); ++k) {
+      PathPoint& p = pts[k];
+      if (!onEdge(p)) continue;
+      const Vec3 e0 = vertexPosition(p.vertices[0]), e1 = vertexPosition(p.vertices[1]);
+      const double t = bestCrossing(pts[k - 1].position, pts[k + 1].position, e0, e1);
+      p.weights = Vec3(1.0 - t, t, 0.0);
+      p.position = (1.0 - t) * e0 + t * e1;
+    }
+    const double next = polylineLength(pts);
+    if (next > length - 1e-12 * length) {
+      length = next;
+      break;  // no progress left
+    }
+    length = next;
+  }
+  return length;
+}
+
+}  // namespace spira::geodesic
