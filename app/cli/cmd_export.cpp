@@ -2,6 +2,7 @@
 #include <fstream>
 #include <iostream>
 #include <optional>
+#include <sstream>
 
 #include "builtin_plugins.h"
 #include "cli_common.h"
@@ -9,7 +10,12 @@
 #include "spira/base/atomic_file.h"
 #include "spira/base/error.h"
 #include "spira/document/cell_file.h"
+#include "spira/document/document.h"
+#include "spira/pipeline/plan_motion.h"
 #include "spira/pipeline/prep_schema.h"
+#include "spira/pipeline/sub_paths.h"
+#include "spira/planning/joints_csv.h"
+#include "spira/planning/plan_files.h"
 #include "spira/planning/trajectory_csv_reader.h"
 #include "spira/plugin/param_cli.h"
 
@@ -17,6 +23,8 @@ namespace spira::cli {
 namespace {
 
 namespace fs = std::filesystem;
+
+constexpr const char* kCsvFormat = "csv";
 
 nlohmann::json readPlanReport(const fs::path& planDir)
 {
@@ -30,6 +38,107 @@ nlohmann::json readPlanReport(const fs::path& planDir)
   }
 }
 
+// What is exported: the planned trajectory, the cell it was planned for (if any), the values the
+// project stored for the path preparation and the exporter, and the header's names.
+struct ExportSource {
+  Trajectory trajectory;
+  std::optional<CellRecord> cell;
+  std::string cellName;  // for the header: a file name or the project's cell name
+  std::string partName;
+  nlohmann::json report = nlohmann::json::object();
+  PlanSettings settings;
+  std::vector<bool> plannedCollision;  // from the plan's joints.csv: points it left in collision
+};
+
+// The collision column (the last) of a joints.csv; empty when the file is missing or does not
+// have one row per planned point.
+std::vector<bool> collisionColumn(const fs::path& file, size_t points)
+{
+  std::vector<bool> out;
+  if (!fs::exists(file)) return out;
+  std::istringstream in(readFile(file));
+  std::string line;
+  std::getline(in, line);  // header
+  while (std::getline(in, line))
+    if (!line.empty()) out.push_back(line.substr(line.rfind(',') + 1) == "1");
+  if (out.size() != points) out.clear();
+  return out;
+}
+
+// A .spira project: its process trajectory (the planned path with its channels) and its cell.
+ExportSource projectSource(const fs::path& file)
+{
+  Document doc;
+  doc.open(file);
+  ExportSource s;
+  const std::shared_ptr<const Trajectory>& planned = doc.results().process;
+  if (!planned || planned->empty())
+    throw InputError(
+        "the project '" + file.string() + "' holds no planned trajectory",
+        "plan it first (Plan in Spira), save it, then export; or run 'spira-cli plan PART -o DIR' "
+        "and export DIR");
+  s.trajectory = *planned;
+  if (doc.cell()) {
+    s.cell = *doc.cell();
+    s.cellName = doc.cell()->name;
+  }
+  s.partName = doc.part() ? (doc.part()->sourcePath.empty() ? doc.part()->name : doc.part()->sourcePath)
+                          : file.stem().string();
+  // The stage reports carry the plan's key figures (revolutions, heights, length) for the header.
+  for (Stage stage : {Stage::Spiral, Stage::Process, Stage::Kinematics})
+    if (const auto& r = doc.results().report(stage); r && r->is_object())
+      for (const auto& [key, value] : r->items()) s.report[key] = value;
+  if (doc.settings()) s.settings = *doc.settings();
+  return s;
+}
+
+// A folder written by 'spira-cli plan': trajectory.csv, report.json and the cell named there.
+ExportSource planFolderSource(const fs::path& dir)
+{
+  ExportSource s;
+  s.report = readPlanReport(dir);
+  s.partName = s.report.value("part", dir.filename().string());
+  const std::string cellFile = s.report.value("cell_file", "");
+  if (!cellFile.empty()) {
+    s.cell = readCellFile(cellFile);
+    s.cellName = cellFile;
+  }
+  s.trajectory = readTrajectoryCsv(dir / "trajectory.csv");
+  s.plannedCollision = collisionColumn(dir / "joints.csv", s.trajectory.size());
+  return s;
+}
+
+ExportSource readSource(const fs::path& input)
+{
+  if (fs::is_directory(input)) return planFolderSource(input);
+  if (fs::is_regular_file(input) && input.extension() == ".spira") return projectSource(input);
+  throw InputError("'" + input.string() + "' is neither a Spira project (.spira) nor a plan folder",
+                   "give a .spira project file or the -o folder of 'spira-cli plan'");
+}
+
+// Stored values overridden by the ones given on the command line.
+ParamSet merged(ParamSet stored, const ParamSet& given)
+{
+  for (const auto& [key, value] : given.values()) stored.set(key, value);
+  return stored;
+}
+
+// The plain export for other tools: the planned trajectory and, with a cell, its solved joints.
+int writeCsv(const ExportSource& source, const std::optional<RobotCell>& cell, const fs::path& outDir)
+{
+  writeFileAtomically(outDir / "trajectory.csv", trajectoryCsv(source.trajectory));
+  std::cout << "wrote " << (outDir / "trajectory.csv").string();
+  if (cell) {
+    NullProgress progress;
+    const MotionResult solved =
+        solveSubPaths(*cell, source.trajectory, motionParamsFor(*cell, MotionSettings{}), progress);
+    writeFileAtomically(outDir / "joints.csv", jointsCsv(solved.joints));
+    std::cout << " and joints.csv (" << (solved.report.reachable ? "reachable" : "NOT reachable") << ")";
+  }
+  std::cout << "\n";
+  return kOk;
+}
+
 }  // namespace
 
 int cmdExport(const std::vector<std::string>& argv)
@@ -38,50 +147,62 @@ int cmdExport(const std::vector<std::string>& argv)
   Args args = splitArgs(argv);
   const bool help = args.takeSwitch("--help");
   const std::string format = args.takeOption("--format");
-  const ExporterPlugin* exporter = format.empty() ? nullptr : &exporterFor(registry, format);
+  const bool csv = format == kCsvFormat;
+  const ExporterPlugin* exporter = format.empty() || csv ? nullptr : &exporterFor(registry, format);
   ParamSet exporterValues, prepValues;
   std::vector<FlagTarget> targets{FlagTarget{"prep", &prepSchema(), &prepValues}};
   if (exporter) targets.push_back(FlagTarget{exporter->id(), &exporter->schema(), &exporterValues});
   if (help) {
     std::cout
-        << "usage: spira-cli export PLAN_DIR --format krl|fanuc_tp -o DIR [--cell CELL] [parameter flags]\n\n"
-           "Writes the robot program of a plan made by 'spira-cli plan' (PLAN_DIR/trajectory.csv):\n"
-           "the path is smoothed and decimated under the tolerances below, solved on the cell (the\n"
-           "plan's --cell by default, read from PLAN_DIR/report.json) and written for the controller.\n"
+        << "usage: spira-cli export PROJECT.spira|PLAN_DIR --format krl|fanuc_tp|csv -o DIR [--cell CELL]\n"
+           "                        [parameter flags]\n\n"
+           "Writes the robot program of a planned part: a Spira project (.spira, planned and saved)\n"
+           "or a folder made by 'spira-cli plan' (PLAN_DIR/trajectory.csv). The path is smoothed and\n"
+           "decimated under the tolerances below, solved on the cell (the project's cell, or the\n"
+           "plan's --cell from PLAN_DIR/report.json; --cell overrides) and written for the controller.\n"
+           "A multi-branch plan gets one arc per sub-path with travel moves between them.\n"
            "Unreachable or colliding points are refused unless --force is given. The exporter's own\n"
-           "flags are listed with --format FORMAT --help.\n"
+           "flags are listed with --format FORMAT --help. --format csv writes the planned\n"
+           "trajectory.csv and, with a cell, joints.csv for other tools.\n"
         << paramFlagsHelp(targets);
     return kOk;
   }
   const std::string outDir = args.takeOption("-o");
-  std::string cellFile = args.takeOption("--cell");
+  const std::string cellFile = args.takeOption("--cell");
   args.rest = consumeParamFlags(args.rest, targets);
   const auto positional = args.finish("export", 1, 1);
-  if (!exporter)
-    throw UsageError("'export' needs a program format", "write --format krl or --format fanuc_tp");
+  if (format.empty())
+    throw UsageError("'export' needs a program format",
+                     "write --format krl, --format fanuc_tp or --format csv");
   if (outDir.empty()) throw UsageError("'export' needs an output folder", "write -o DIR");
-  const fs::path planDir = positional[0];
-  if (!fs::is_directory(planDir))
-    throw InputError("'" + planDir.string() + "' is not a plan folder",
-                     "give the -o folder of 'spira-cli plan'");
+  const fs::path input = positional[0];
+  if (!fs::exists(input))
+    throw InputError("'" + input.string() + "' does not exist",
+                     "give a .spira project file or the -o folder of 'spira-cli plan'");
+  // Nothing is read or computed before the output folder is known to be writable.
   ensureWritableDirectory(outDir);
 
-  const nlohmann::json report = readPlanReport(planDir);
-  if (cellFile.empty()) cellFile = report.value("cell_file", "");
+  ExportSource source = readSource(input);
+  if (!cellFile.empty()) {
+    source.cell = readCellFile(cellFile);
+    source.cellName = cellFile;
+    source.plannedCollision.clear();  // found with another cell's torch and links
+  }
   const std::optional<RobotCell> cell =
-      cellFile.empty() ? std::nullopt : std::optional<RobotCell>(RobotCell(readCellFile(cellFile)));
+      source.cell ? std::optional<RobotCell>(RobotCell(*source.cell)) : std::nullopt;
   if (cell && !cell->canSolve()) throw InputError(cell->ikRefusal(), "choose a cell with a 6-axis arm");
+  if (csv) return writeCsv(source, cell, outDir);
   if (!cell) std::cerr << "note: no cell: the program's targets are torch poses in the part frame\n";
 
-  const Trajectory planned = readTrajectoryCsv(planDir / "trajectory.csv");
   ExportJob job;
   job.exporterId = exporter->id();
-  job.exporterParams = exporterValues;
-  job.prep = prepParamsFrom(prepValues);
+  job.exporterParams = merged(source.settings.section(exporter->id()), exporterValues);
+  job.prep = prepParamsFrom(merged(source.settings.section("prep"), prepValues));
   job.cell = cell ? &*cell : nullptr;
-  job.header = programHeader(report.value("part", planDir.filename().string()), cellFile, report);
+  job.plannedCollision = source.plannedCollision;
+  job.header = programHeader(source.partName, source.cellName, source.report);
   NullProgress progress;
-  const ExportOutcome exported = exportTrajectory(registry, planned, job, outDir, progress);
+  const ExportOutcome exported = exportTrajectory(registry, source.trajectory, job, outDir, progress);
   printExportSummary(exported, std::cout);
   return kOk;
 }

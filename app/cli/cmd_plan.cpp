@@ -169,6 +169,8 @@ int cmdPlan(const std::vector<std::string>& argv)
     job.exporterParams = exporterValues;
     job.prep = prep;
     job.cell = cell ? &*cell : nullptr;
+    if (motion)  // unresolved collisions of the plan are flagged in the program (refused unless forced)
+      for (const JointPoint& p : motion->joints.points) job.plannedCollision.push_back(p.collision);
     job.header = programHeader(positional[0], cellFile, report);
     const ExportOutcome exported = exportTrajectory(registry, finalPath, job, outDir, progress);
     printExportSummary(exported, std::cout);

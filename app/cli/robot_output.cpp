@@ -67,7 +67,9 @@ void printExportSummary(const ExportOutcome& e, std::ostream& out)
 {
   out << "program: " << e.prep.pointsIn << " planned points -> " << e.robotTargets
       << " robot targets (chord <= " << std::setprecision(4) << e.prep.maxChordDeviation << " mm), "
-      << e.result.files.size() << " file(s):";
+      << e.result.files.size() << " file(s)"
+      << (e.subPaths > 1 ? ", " + std::to_string(e.subPaths) + " sub-paths (one arc each)" : std::string())
+      << ":";
   for (const auto& f : e.result.files) out << " " << f.filename().string();
   out << "\n";
   for (const auto& w : e.result.warnings) out << "warning: " << w << "\n";

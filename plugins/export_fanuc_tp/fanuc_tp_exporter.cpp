@@ -198,6 +198,12 @@ ExportResult FanucTpExporter::write(const ExportInput& input, const ParamSet& pa
   ExportResult result;
   result.warnings = path.warnings;
   checkConfigs(path, s, result);
+  const std::string name = tpProgramName(s.programName);
+  if (name != s.programName)
+    result.warnings.push_back("program name '" + s.programName +
+                              "' is not a valid TP name (at most 36 capital "
+                              "letters, digits or '_', starting with a letter); written as '" +
+                              name + "'");
 
   std::vector<std::pair<std::string, std::string>> settings;
   settings.emplace_back("program", tpProgramName(s.programName));
@@ -223,6 +229,9 @@ ExportResult FanucTpExporter::write(const ExportInput& input, const ParamSet& pa
                      std::to_string(s.weldSchedule) + "], Arc End[" + std::to_string(s.endSchedule) + "]" +
                      (s.process == ProcessCommand::Speed ? std::string()
                                                          : ", WFS AO[" + std::to_string(s.wfsOutput) + "]"));
+  if (path.arcCount > 1)
+    settings.emplace_back("sub-paths", std::to_string(path.arcCount) + " arcs, J travel between them");
+  if (path.hasLead && s.process != ProcessCommand::Speed) settings.emplace_back("wfs lead", "TB point logic");
   if (path.flaggedCount > 0)
     settings.emplace_back("forced", std::to_string(path.flaggedCount) + " points flagged");
   const std::vector<std::string> header = programHeaderLines(input.header, settings);

@@ -23,6 +23,12 @@
 //   one, once each;
 // - the wire feed on AO[n] rides on the motion line before the move it belongs to as the point
 //   logic "TA 0.00sec,AO[n]=v", so it switches at the path point instead of stopping the look-ahead;
+// - a plan with several sub-paths has one Arc Start / Arc End per sub-path; between them the
+//   torch retracts, travels and approaches with FINE L moves and the arc off, and the move from
+//   one sub-path's side to the next is a J move (the CONFIG may change there);
+// - with a led wire feed (export_path.h) each setpoint rides on the move during which it is due as
+//   "TB t sec,AO[n]=v" (t before that move's end point, never more than the move lasts); a
+//   motion line takes one such option, so of two setpoints due in one move the later is written;
 // - a long path is split into parts <NAME>_001.. that the main program CALLs in order; ArcTool
 //   keeps the weld on across the calls until Arc End (seed 004 ran its points from two
 //   alternating sub-programs this way on an R-30iB Plus).
@@ -136,6 +142,7 @@ class TpWriter {
     frames_.uframe = s_.uframe;
     frames_.utool = s_.utool;
     frames_.positioner = path_.hasPositioner;
+    if (path_.hasLead && s_.process != ProcessCommand::Speed) planLeadOptions();
   }
 
   TpOutput run(Progress& progress)
@@ -198,6 +205,42 @@ class TpWriter {
     }
   }
 
+  // The led setpoints as point logic on the moves during which they are due.
+  void planLeadOptions()
+  {
+    const size_t n = path_.points.size();
+    std::vector<double> time(n, 0.0);
+    for (size_t k = 1; k < n; ++k) time[k] = time[k - 1] + path_.points[k].moveTime;
+    leadOptions_.assign(n, std::string());
+    size_t strike = 0;
+    std::string last;
+    for (size_t k = 0; k < n; ++k) {
+      const ExportPoint& p = path_.points[k];
+      if (p.strike) strike = k;
+      if (!p.writeWfs) continue;
+      const std::string value = analogValueText(p.wfs);
+      if (value == last) continue;
+      last = value;
+      const double fire = time[k] - p.wfsLead;
+      const std::string ao = ",AO[" + std::to_string(s_.wfsOutput) + "]=" + value;
+      if (fire <= time[strike] + 0.005) {
+        leadOptions_[strike] = " TA 0.00sec" + ao;  // in force as the arc is struck
+        continue;
+      }
+      size_t m = strike + 1;
+      while (m < k && time[m] < fire) ++m;
+      char buf[32];
+      std::snprintf(buf, sizeof buf, " TB %.2fsec", std::max(0.0, time[m] - fire));
+      leadOptions_[m] = buf + ao;
+    }
+  }
+
+  std::string analogValueText(double wfs) const
+  {
+    return std::to_string(
+        static_cast<long long>(std::llround(wfsAnalogValue(wfs, s_.wfsOffset, s_.wfsGain))));
+  }
+
   void writeMoves(size_t begin, size_t end, TpProgram& program, Progress& progress)
   {
     const size_t n = path_.points.size();
@@ -207,7 +250,10 @@ class TpWriter {
         progress.report(0.5 + 0.4 * static_cast<double>(k) / static_cast<double>(n), "writing TP");
       }
       warnIfFlagged(program, k);
-      writeMove(program, k, pathSpeedText(k));
+      if (path_.points[k].transfer)
+        program.comment("travel to sub-path " + std::to_string(path_.points[k].path) + ", arc off");
+      writeMove(program, k,
+                path_.points[k].transfer ? std::to_string(s_.jointSpeed) + "%" : pathSpeedText(k));
     }
   }
 
@@ -216,26 +262,27 @@ class TpWriter {
   {
     const size_t n = path_.points.size();
     const ExportPoint& p = path_.points[k];
-    const bool fine = k == 0 || k == path_.arcStart || k == path_.arcEnd || k + 1 == n;
+    const bool fine = k == 0 || p.strike || p.stop || !p.inArc || k + 1 == n;
     const size_t index = program.addPosition();
     std::string text = " P[" + std::to_string(index) + "] " + speed + " " +
                        (fine ? std::string("FINE") : "CNT" + std::to_string(s_.cnt));
-    if (k + 1 < n && path_.points[k + 1].writeWfs && s_.process != ProcessCommand::Speed) {
-      const double value = wfsAnalogValue(path_.points[k + 1].wfs, s_.wfsOffset, s_.wfsGain);
-      const std::string valueText = std::to_string(static_cast<long long>(std::llround(value)));
+    if (!leadOptions_.empty()) {
+      text += leadOptions_[k];
+    } else if (k + 1 < n && path_.points[k + 1].writeWfs && s_.process != ProcessCommand::Speed) {
+      const std::string valueText = analogValueText(path_.points[k + 1].wfs);
       if (valueText != analogText_) {
         analogText_ = valueText;
         text += " TA 0.00sec,AO[" + std::to_string(s_.wfsOutput) + "]=" + valueText;
       }
     }
-    const char type = k == 0 && !path_.hasApproach ? 'J' : 'L';
+    const char type = (k == 0 && !path_.hasApproach) || p.transfer ? 'J' : 'L';
     program.motion(type, text);
     if (s_.jointPositions)
       appendJointPosition(program.positions(), index, p.robotDeg, p.externalDeg, frames_);
     else
       appendCartesianPosition(program.positions(), index, p.pose, config(k), p.externalDeg, frames_);
-    if (k == path_.arcStart) program.statement("Arc Start[" + std::to_string(s_.weldSchedule) + "]");
-    if (k == path_.arcEnd) program.statement("Arc End[" + std::to_string(s_.endSchedule) + "]");
+    if (p.strike) program.statement("Arc Start[" + std::to_string(s_.weldSchedule) + "]");
+    if (p.stop) program.statement("Arc End[" + std::to_string(s_.endSchedule) + "]");
   }
 
   void warnIfFlagged(TpProgram& program, size_t k) const
@@ -301,6 +348,7 @@ class TpWriter {
   const std::vector<std::string>& header_;
   TpPositionFrames frames_;
   std::string analogText_;
+  std::vector<std::string> leadOptions_;  // by move; empty without a lead
   double worstSpeedError_ = 0.0;
 };
 

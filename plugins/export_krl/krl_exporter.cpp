@@ -136,6 +136,12 @@ ExportResult KrlExporter::write(const ExportInput& input, const ParamSet& params
 
   ExportResult result;
   result.warnings = path.warnings;
+  const std::string name = krlProgramName(s.programName);
+  if (name != s.programName)
+    result.warnings.push_back("program name '" + s.programName +
+                              "' is not a valid KRL name (at most 24 letters, "
+                              "digits or '_', starting with a letter, no keyword); written as '" +
+                              name + "'");
   std::vector<std::pair<std::string, std::string>> settings;
   settings.emplace_back("program", krlProgramName(s.programName));
   settings.emplace_back("points",
@@ -167,6 +173,11 @@ ExportResult KrlExporter::write(const ExportInput& input, const ParamSet& params
                                               : ", WFS $ANOUT[" + std::to_string(s.wfsOutput) + "]") +
           (s.jobOutput > 0 ? ", job " + std::to_string(s.weldJob) : std::string()) +
           (s.jobOutput > 0 && s.endJob > 0 ? ", end job " + std::to_string(s.endJob) : std::string()));
+  if (path.arcCount > 1)
+    settings.emplace_back("sub-paths", std::to_string(path.arcCount) +
+                                           " arcs, one per sub-path; PTP travel between them, arc off");
+  if (path.hasLead && s.process != ProcessCommand::Speed)
+    settings.emplace_back("wfs lead", "setpoints led by the feeder's lag (TRIGGER DELAY)");
   if (path.flaggedCount > 0)
     settings.emplace_back("forced",
                           std::to_string(path.flaggedCount) + " points flagged, see WARNING comments");

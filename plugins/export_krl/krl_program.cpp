@@ -27,7 +27,14 @@
 //   and over-deposit);
 // - a long path is split into parts <name>_001.. that the main program calls in order; the
 //   advance run and approximation continue across the calls, and the arc, switched by triggers
-//   in the first and last parts, stays on in between.
+//   in the first and last parts, stays on in between;
+// - a plan with several sub-paths has one arc per sub-path; between them the torch retracts,
+//   travels and approaches with exact LIN moves and the arc off, and the move from one sub-path's
+//   side to the next is a PTP (the arm configuration, S and T, may change there);
+// - with a led wire feed (export_path.h) each setpoint fires its lead time before its point, on
+//   the move during which that time falls: DISTANCE=0 with a positive DELAY in the first half of
+//   the move, DISTANCE=1 with a negative DELAY in the second half, so the delay never reaches past
+//   the move's own start (KSS 8 bounds a negative DELAY by the start of the motion block).
 namespace spira {
 
 namespace {
@@ -45,6 +52,7 @@ class KrlWriter {
   KrlWriter(const ExportPath& path, const KrlSettings& settings, const std::vector<std::string>& header)
       : path_(path), s_(settings), header_(header)
   {
+    if (path_.hasLead && s_.process != ProcessCommand::Speed) planLeadTriggers();
   }
 
   std::vector<OutputFile> run(Progress& progress)
@@ -172,20 +180,59 @@ class KrlWriter {
       const ExportPoint& p = path_.points[k];
       const std::string name = "XP" + std::to_string(k);
       warnIfFlagged(src, k);
-      setSpeed(src, p.speed);
-      if (p.writeWfs && s_.process != ProcessCommand::Speed) setWireFeed(src, p.wfs, k);
-      if (k - 1 == path_.arcStart)
+      if (p.transfer) comment(src, "travel to sub-path " + std::to_string(p.path) + ", arc off");
+      if (!p.transfer) setSpeed(src, p.speed);
+      if (!leadTriggers_.empty())
+        for (const std::string& t : leadTriggers_[k]) line(src, t);
+      else if (p.writeWfs && s_.process != ProcessCommand::Speed)
+        setWireFeed(src, p.wfs, k);
+      if (path_.points[k - 1].strike) {
+        if (s_.jobOutput > 0 && s_.endJob > 0 && path_.points[k - 1].path != path_.points.front().path)
+          line(src, std::string("TRIGGER WHEN DISTANCE=0 DELAY=0 DO ") + kJobSignal + "=" +
+                        std::to_string(s_.weldJob) + " ; weld job at XP" + std::to_string(k - 1));
         line(src, "TRIGGER WHEN DISTANCE=0 DELAY=0 DO $OUT[" + std::to_string(s_.arcOutput) +
                       "]=TRUE ; arc on at XP" + std::to_string(k - 1));
-      if (k == path_.arcEnd && s_.jobOutput > 0 && s_.endJob > 0)
+      }
+      if (p.stop && s_.jobOutput > 0 && s_.endJob > 0)
         line(src, std::string("TRIGGER WHEN DISTANCE=1 DELAY=0 DO ") + kJobSignal + "=" +
                       std::to_string(s_.endJob) + " ; end job at " + name);
-      if (k == path_.arcEnd)
+      if (p.stop)
         line(src, "TRIGGER WHEN DISTANCE=1 DELAY=0 DO $OUT[" + std::to_string(s_.arcOutput) +
                       "]=FALSE ; arc off at " + name);
-      const bool exact = s_.cdis <= 0.0 || k == path_.arcStart || k == path_.arcEnd || k + 1 == n;
-      line(src, "LIN " + name + (exact ? "" : " C_DIS"));
+      const bool exact = s_.cdis <= 0.0 || p.strike || p.stop || !p.inArc || k + 1 == n;
+      line(src, (p.transfer ? "PTP " : "LIN ") + name + (exact ? "" : " C_DIS"));
       declare(dat, name, p.pose, p);
+    }
+  }
+
+  // The led setpoints as triggers on the moves during which they fire (see the file comment).
+  void planLeadTriggers()
+  {
+    const size_t n = path_.points.size();
+    std::vector<double> time(n, 0.0);
+    for (size_t k = 1; k < n; ++k) time[k] = time[k - 1] + path_.points[k].moveTime;
+    leadTriggers_.resize(n);
+    size_t strike = 0;
+    std::string last;
+    for (size_t k = 0; k < n; ++k) {
+      const ExportPoint& p = path_.points[k];
+      if (p.strike) strike = k;
+      if (!p.writeWfs) continue;
+      const std::string value = analogText(p.wfs, k);
+      if (value == last) continue;
+      last = value;
+      const double fire = time[k] - p.wfsLead;
+      size_t m = strike + 1;
+      while (m < k && time[m] < fire) ++m;
+      const double start = time[m - 1], end = time[m];
+      std::string t;
+      if (fire <= start || fire - start <= 0.5 * (end - start))
+        t = "TRIGGER WHEN DISTANCE=0 DELAY=" +
+            std::to_string(std::llround(1000.0 * std::max(0.0, fire - start)));
+      else
+        t = "TRIGGER WHEN DISTANCE=1 DELAY=-" + std::to_string(std::llround(1000.0 * (end - fire)));
+      leadTriggers_[m].push_back(t + " DO $ANOUT[" + std::to_string(s_.wfsOutput) + "]=" + value +
+                                 " ; WFS of XP" + std::to_string(k));
     }
   }
 
@@ -204,7 +251,7 @@ class KrlWriter {
     line(src, "$VEL.CP=" + text);
   }
 
-  void setWireFeed(std::string& src, double wfs, size_t k)
+  std::string analogText(double wfs, size_t k) const
   {
     const double value = wfsAnalogValue(wfs, s_.wfsOffset, s_.wfsGain);
     if (!(value >= -1.0 && value <= 1.0))
@@ -213,6 +260,12 @@ class KrlWriter {
                        "lower wfs_gain or wfs_offset so offset + gain x WFS stays within -1 .. 1");
     std::string text;
     appendFixed(text, value, kAnalogDecimals);
+    return text;
+  }
+
+  void setWireFeed(std::string& src, double wfs, size_t k)
+  {
+    const std::string text = analogText(wfs, k);
     if (text == analogText_) return;
     analogText_ = text;
     line(src, "TRIGGER WHEN DISTANCE=0 DELAY=0 DO $ANOUT[" + std::to_string(s_.wfsOutput) + "]=" + text);
@@ -249,6 +302,7 @@ class KrlWriter {
   const std::vector<std::string>& header_;
   std::string speedText_;
   std::string analogText_;
+  std::vector<std::vector<std::string>> leadTriggers_;  // by move; empty without a lead
 };
 
 }  // namespace

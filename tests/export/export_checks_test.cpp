@@ -191,6 +191,33 @@ TEST_P(ExportChecks, UnusablePlansAreInputErrors)
   EXPECT_TRUE(test::filesIn(dir.path()).empty());
 }
 
+// A name the controller would reject is fixed, the files carry the fixed name, and the user is
+// told why.
+TEST_P(ExportChecks, InvalidProgramNamesAreFixedWithTheReason)
+{
+  const Case& c = GetParam();
+  test::TempDir dir;
+  ParamSet params;
+  params.set("program_name", std::string("3rd wall-part!"));
+  const ExportResult result = test::runExporter(c.id, test::cylinderPlan(1, 8), nullptr, params, dir.path());
+  const std::string fixed = c.id == kKrl.id ? "P3rd_wall_part" : "P3RD_WALL_PART";
+  bool told = false;
+  for (const auto& w : result.warnings)
+    told = told || (w.find("'3rd wall-part!' is not a valid") != std::string::npos &&
+                    w.find("written as '" + fixed + "'") != std::string::npos);
+  EXPECT_TRUE(told);
+  const std::vector<std::string> expected = c.id == kKrl.id
+                                                ? std::vector<std::string>{fixed + ".dat", fixed + ".src"}
+                                                : std::vector<std::string>{fixed + ".ls"};
+  EXPECT_EQ(test::filesIn(dir.path()), expected);
+  // A valid name passes without a warning.
+  test::TempDir ok;
+  ParamSet valid;
+  valid.set("program_name", std::string(c.mainName));
+  for (const auto& w : test::runExporter(c.id, test::cylinderPlan(1, 8), nullptr, valid, ok.path()).warnings)
+    EXPECT_EQ(w.find("is not a valid"), std::string::npos) << w;
+}
+
 TEST_P(ExportChecks, AnUnwritableFolderFailsBeforeWriting)
 {
   const Case& c = GetParam();

@@ -106,6 +106,7 @@ void checkJointMotion(const JointTrajectory& joints, ExportPath& path)
   for (size_t i = 1; i < path.points.size(); ++i) {
     const ExportPoint& a = path.points[i - 1];
     const ExportPoint& b = path.points[i];
+    if (b.transfer) continue;  // a joint move: the controller times it and may change configuration
     if (b.moveTime > 0.0) {
       for (size_t k = 0; k < 6; ++k)
         speeds.note(joints.robotLimits[k], std::abs(b.robotDeg[k] - a.robotDeg[k]) / b.moveTime, i);
@@ -129,34 +130,54 @@ void checkJointMotion(const JointTrajectory& joints, ExportPath& path)
                             "); a linear move cannot switch branches, check the kinematics solution");
 }
 
-void findArc(const Trajectory& trajectory, ExportPath& path)
+// One arc per sub-path, from its first to its last arc-on point.
+void findArcs(const Trajectory& trajectory, ExportPath& path)
 {
   const auto& pts = trajectory.points;
-  const auto first = std::find_if(pts.begin(), pts.end(), [](const TrajectoryPoint& p) { return p.arcOn; });
-  const auto last = std::find_if(pts.rbegin(), pts.rend(), [](const TrajectoryPoint& p) { return p.arcOn; });
-  if (first == pts.end() ||
-      static_cast<size_t>(pts.rend() - last) - 1 <= static_cast<size_t>(first - pts.begin()))
+  const size_t n = pts.size();
+  size_t gaps = 0, firstGap = 0, runStart = 0;
+  for (size_t i = 0; i < n; ++i) path.points[i].path = pts[i].path;
+  for (size_t i = 1; i <= n; ++i) {
+    if (i < n && pts[i].path == pts[runStart].path) continue;
+    size_t first = runStart, last = i;
+    while (first < i && !pts[first].arcOn) ++first;
+    while (last > first && !pts[last - 1].arcOn) --last;
+    if (last > first + 1) {
+      --last;
+      path.points[first].strike = true;
+      path.points[last].stop = true;
+      for (size_t k = first; k <= last; ++k) {
+        path.points[k].inArc = true;
+        if (!pts[k].arcOn && gaps++ == 0) firstGap = k;
+      }
+      if (path.arcCount++ == 0) path.arcStart = first;
+      path.arcEnd = last;
+    }
+    if (i < n) path.points[i].transfer = true;
+    runStart = i;
+  }
+  if (path.arcCount == 0)
     throw InputError("the plan deposits nothing: the arc is on at fewer than two points",
                      "check the plan's arc channel and plan again");
-  path.arcStart = static_cast<size_t>(first - pts.begin());
-  path.arcEnd = static_cast<size_t>(pts.rend() - last) - 1;
-  size_t gaps = 0, firstGap = 0;
-  for (size_t i = path.arcStart; i <= path.arcEnd; ++i)
-    if (!pts[i].arcOn && gaps++ == 0) firstGap = i;
   if (gaps > 0)
-    path.warnings.push_back(
-        "the plan switches the arc off at " + std::to_string(gaps) + (gaps == 1 ? " point" : " points") +
-        " inside the deposition (first: " + pointText(firstGap) + "); the program keeps one arc from " +
-        pointText(path.arcStart) + " to " + pointText(path.arcEnd));
+    path.warnings.push_back("the plan switches the arc off at " + std::to_string(gaps) +
+                            (gaps == 1 ? " point" : " points") + " inside a sub-path's deposition (first: " +
+                            pointText(firstGap) + "); the program keeps one arc per sub-path");
 }
 
+// Which moves write a WFS setpoint: only while the arc burns, each arc starting with its own value.
+// Without a lead the setpoint of point k is written as move k starts, so moves into points
+// strike+1 .. stop; with one, the setpoints of points strike .. stop are written ahead of them.
 void markAnalogSetpoints(const PathOptions& options, ExportPath& path)
 {
   if (options.process == ProcessCommand::Speed) return;
   double last = 0.0;
   bool any = false;
-  for (size_t i = 1; i < path.points.size(); ++i) {
+  for (size_t i = 0; i < path.points.size(); ++i) {
     ExportPoint& p = path.points[i];
+    if (p.strike) any = false;
+    const bool writable = path.hasLead ? p.inArc : p.inArc && !p.strike;
+    if (!writable) continue;
     const double change = std::abs(p.wfs - last);
     if (!any || (options.wfsDeadband > 0.0 ? change >= options.wfsDeadband : change > 1e-12)) {
       p.writeWfs = true;
@@ -212,8 +233,11 @@ ExportPath prepareExportPath(const ExportInput& input, const PathOptions& option
   ExportPath path;
   path.hasJoints = joints != nullptr;
   path.hasPositioner = joints && joints->hasPositioner;
-  findArc(trajectory, path);
   path.points.resize(n);
+  findArcs(trajectory, path);
+  const auto command = trajectory.extra.find(kWfsCommandChannel);
+  const auto lead = trajectory.extra.find(kWfsLeadChannel);
+  path.hasLead = command != trajectory.extra.end() && lead != trajectory.extra.end();
   for (size_t i = 0; i < n; ++i) {
     if ((i & 4095) == 0) {
       progress.checkCancel();
@@ -223,6 +247,13 @@ ExportPath prepareExportPath(const ExportInput& input, const PathOptions& option
     checkChannels(tp, i);
     ExportPoint& ep = path.points[i];
     ep.wfs = tp.wireFeed;
+    if (path.hasLead) {
+      ep.wfs = command->second[i];
+      ep.wfsLead = lead->second[i];
+      if (!std::isfinite(ep.wfs) || !(ep.wfsLead >= 0.0) || !std::isfinite(ep.wfsLead))
+        throw InputError("the led wire feed of " + pointText(i) + " is not a finite setpoint and lead",
+                         "export again from the plan");
+    }
     if (joints) {
       const JointPoint& jp = joints->points[i];
       ep.pose = jp.baseTcp;
@@ -244,7 +275,7 @@ ExportPath prepareExportPath(const ExportInput& input, const PathOptions& option
     if (i > 0) {
       const double partStep = (tp.position - trajectory.points[i - 1].position).norm();
       const double robotStep = (ep.pose.translation() - path.points[i - 1].pose.translation()).norm();
-      path.length += partStep;
+      if (path.points[i - 1].inArc && ep.inArc) path.length += partStep;
       ep.moveTime = partStep / tp.travelSpeed;
       // Keep the planned duration of every move: with a moving part (positioner) the torch
       // covers another distance than the deposit in the same time.
@@ -257,6 +288,7 @@ ExportPath prepareExportPath(const ExportInput& input, const PathOptions& option
     const double constant = path.points[std::min(path.arcStart + 1, n - 1)].speed;
     double lo = constant, hi = constant;
     for (size_t i = 1; i < n; ++i) {
+      if (!path.points[i - 1].inArc || !path.points[i].inArc) continue;  // travel keeps its own speed
       lo = std::min(lo, path.points[i].speed);
       hi = std::max(hi, path.points[i].speed);
       path.points[i].speed = constant;

@@ -10,6 +10,12 @@
 
 namespace spira {
 
+// Optional trajectory channels (Trajectory::extra) with a led wire feed (pipeline/export_job.h):
+// the setpoint due at each point (mm/s) and how long (s) before reaching the point it must be
+// written so that the feeder's modelled output reaches the planned value there.
+inline constexpr const char* kWfsCommandChannel = "wfs_command";
+inline constexpr const char* kWfsLeadChannel = "wfs_lead_s";
+
 // How the process is commanded along the path.
 enum class ProcessCommand {
   Speed,        // per-move speed from the TS channel; the weld job sets the wire feed
@@ -34,8 +40,14 @@ struct ExportPoint {
   Transform pose = Transform::Identity();
   double speed = 0.0;     // mm/s of move k in the target's frame (the TS channel for a fixed part)
   double moveTime = 0.0;  // s: planned duration of move k, |part-frame step| / TS (0 for point 0)
-  double wfs = 0.0;       // mm/s, the WFS channel of point k
+  double wfs = 0.0;       // mm/s, the WFS channel of point k (the led setpoint with a lead)
   bool writeWfs = false;  // analog modes: the WFS setpoint of move k must be written (deadband)
+  double wfsLead = 0.0;   // s: with a lead, the setpoint is written this long before reaching k
+  int path = 0;           // sub-path index (the trajectory's path channel)
+  bool inArc = false;     // the arc burns at this point (between a strike and a stop, both included)
+  bool strike = false;    // the arc is struck here (first point of an arc)
+  bool stop = false;      // the arc is put out here (last point of an arc)
+  bool transfer = false;  // move k changes sub-path: a joint move (the arm configuration may change)
   std::array<double, 6> robotDeg{};
   std::array<double, 2> externalDeg{};
   int kukaStatus = 0;
@@ -50,8 +62,10 @@ struct ExportPath {
   Transform approach = Transform::Identity();  // = points.front().pose when there is no approach
   Transform retract = Transform::Identity();   // = points.back().pose when there is no retract
   bool hasApproach = false;
-  size_t arcStart = 0;  // first point with the arc on: the arc is struck there
-  size_t arcEnd = 0;    // last point with the arc on: the arc is put out there
+  size_t arcStart = 0;   // first point with the arc on: the first arc is struck there
+  size_t arcEnd = 0;     // last point with the arc on: the last arc is put out there
+  size_t arcCount = 0;   // arcs: one per sub-path (the points' strike/stop flags)
+  bool hasLead = false;  // the wire feed is led (kWfsLeadChannel): setpoints carry wfsLead
   bool hasJoints = false;
   bool hasPositioner = false;
   size_t flaggedCount = 0;  // points with a problem (written only when forced)
@@ -59,7 +73,10 @@ struct ExportPath {
   std::vector<std::string> warnings;
 };
 
-// Checks `input` against `options` and builds the targets. Throws InputError when the plan
+// Checks `input` against `options` and builds the targets. Every sub-path (a run of one `path`
+// index) gets one arc, from its first to its last arc-on point; its points before and after that
+// (travel moves) and the move between sub-paths run with the arc off and write no process output.
+// Throws InputError when the plan
 // cannot be exported: fewer than two points, no deposition (arc on at fewer than two points),
 // non-finite or non-positive channels, a joint trajectory of another size or controller, or
 // (unless options.force) points that are unreachable, in collision or outside joint limits.

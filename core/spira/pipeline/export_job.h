@@ -3,6 +3,7 @@
 #include <filesystem>
 #include <map>
 #include <string>
+#include <vector>
 
 #include "spira/base/progress.h"
 #include "spira/plugin/exporter.h"
@@ -20,6 +21,10 @@ struct ExportJob {
   PrepParams prep;
   const RobotCell* cell = nullptr;
   bool optimiseSpin = true;  // layer-wise torch spin on the prepared points (plan_motion.h)
+  // Per planned point, whether the plan left it in collision (torch or robot links, as
+  // solvePlanMotion found); empty when unknown. The program's targets standing for such points
+  // are flagged "in collision" (refused unless the exporter's `force` is set). Needs a cell.
+  std::vector<bool> plannedCollision;
   std::map<std::string, std::string> header;
 };
 
@@ -28,13 +33,19 @@ struct ExportOutcome {
   PrepReport prep;
   size_t robotTargets = 0;  // points written
   size_t unreachableTargets = 0;
+  size_t subPaths = 1;  // sub-paths of the plan: one arc start and stop each
   double seconds = 0.0;
 };
 
 // Prepares the planned trajectory (smoothing and decimation under the job's tolerances), solves the
 // prepared points on the cell when there is one, and writes the program with the exporter (all
-// files or none). Throws InputError for unknown exporters or bad parameters; an exporter refuses
-// unreachable or colliding targets unless its `force` parameter is set.
+// files or none). A plan with several sub-paths (the `path` channel of a multi-branch part) is
+// prepared and solved sub-path by sub-path and written with one arc start and stop each and a
+// retract, travel and approach between them at job.prep.travelClearance above the plan, arc off.
+// With job.prep.leadWireFeed the wire-feed setpoints are led by the feeder's lag (the
+// kWfsCommandChannel / kWfsLeadChannel channels of export_path.h). Throws InputError for unknown
+// exporters or bad parameters; an exporter refuses unreachable or colliding targets unless its
+// `force` parameter is set.
 ExportOutcome exportTrajectory(const PluginRegistry& registry, const Trajectory& planned,
                                const ExportJob& job, const std::filesystem::path& outDir, Progress& progress);
 

@@ -7,6 +7,7 @@
 #include "spira/base/units.h"
 #include "spira/collision/collision_resolver.h"
 #include "spira/motion/motion_solver.h"
+#include "spira/pipeline/sub_paths.h"
 #include "spira/robotcell/robot_collision_model.h"
 
 namespace spira {
@@ -109,9 +110,11 @@ PlanMotion solvePlanMotion(const RobotCell& cell, const Trajectory& plan, const 
   timings["torch_collisions"] = seconds(lap);
   lap = Clock::now();
   SubProgress ikProgress(progress, 0.4, 0.8, "joint motion");
-  const JointPathSetup setup = cell.seededSetup(out.trajectory);
-  MotionResult solved = solveMotion(cell.ik(), cell.convention(), out.trajectory, setup,
-                                    motionParamsFor(cell, settings), ikProgress);
+  // One solve per sub-path (a multi-branch plan): each holds its own arm configuration.
+  std::vector<JointPathSetup> setups;
+  MotionResult solved =
+      solveSubPaths(cell, out.trajectory, motionParamsFor(cell, settings), ikProgress, &setups);
+  const JointPathSetup& setup = setups.front();
   out.joints = std::move(solved.joints);
   const MotionReport& m = solved.report;
   for (size_t i : unresolved) out.joints.points[i].collision = true;
@@ -137,7 +140,12 @@ PlanMotion solvePlanMotion(const RobotCell& cell, const Trajectory& plan, const 
   r["reachable"] = out.reachable;
   r["unreachable_points"] = unreachable.size();
   r["unreachable_indices"] = firstIndices(unreachable);
-  r["configuration"] = setup.configuration ? setup.configuration->label() : std::string();
+  // One label per sub-path, in build order (one for a single spiral).
+  std::string configurations;
+  for (size_t k = 0; k < setups.size(); ++k)
+    configurations +=
+        (k ? ", " : "") + (setups[k].configuration ? setups[k].configuration->label() : std::string());
+  r["configuration"] = configurations;
   r["min_joint_limit_margin_deg"] = std::isfinite(m.minLimitMarginDeg) ? m.minLimitMarginDeg : 0.0;
   r["min_joint_limit_margin_axis"] = m.minLimitMarginAxis;
   r["min_joint_limit_margin_point"] = indexOrNull(m.minLimitMarginPoint);

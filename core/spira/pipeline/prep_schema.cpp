@@ -43,6 +43,28 @@ const ParamSchema& prepSchema()
           "Points closer than this are merged (robots slow down on near-duplicate points)."),
       num("max_spacing", 5.0, 0.1, 1000.0, "mm", "Maximum point spacing",
           "Longest move written; Chalvin measured the path error growing with the point spacing."),
+      ParamDef{"wfs_lead",
+               ParamType::Bool,
+               false,
+               {},
+               {},
+               "",
+               "Lead the wire feed",
+               "Write each wire-feed setpoint early, by the feeder's dead time and lag below, so the feed "
+               "reaches the planned value at its point (analog process modes).",
+               "Path preparation",
+               {}},
+      num("lead_dead_time", 0.1, 0.0, 5.0, "s", "Feeder dead time",
+          "Delay between a setpoint change and the first change of the wire feed."),
+      num("lead_rise_time", 0.1, 0.001, 5.0, "s", "Feeder rise time constant",
+          "First-order time constant of the wire feed while it speeds up."),
+      num("lead_fall_time", 0.1, 0.001, 5.0, "s", "Feeder fall time constant",
+          "First-order time constant of the wire feed while it slows down."),
+      num("travel_clearance", 30.0, 1.0, 1000.0, "mm", "Travel clearance",
+          "Between sub-paths (multi-branch parts) the torch backs off this far along its axis and travels, "
+          "arc off, this far above the highest point of the plan."),
+      num("travel_speed", 50.0, 1.0, 2000.0, "mm/s", "Travel speed between sub-paths",
+          "Linear speed of the retract, travel and approach moves between sub-paths."),
   });
   return schema;
 }
@@ -61,6 +83,12 @@ PrepParams prepParamsFrom(const ParamSet& given)
   p.orientationTolerance = degToRad(v.getDouble("angle_tolerance"));
   p.minSpacing = v.getDouble("min_spacing");
   p.maxSpacing = v.getDouble("max_spacing");
+  p.leadWireFeed = v.getBool("wfs_lead");
+  p.wireFeedLag.deadTime = v.getDouble("lead_dead_time");
+  p.wireFeedLag.riseTimeConstant = v.getDouble("lead_rise_time");
+  p.wireFeedLag.fallTimeConstant = v.getDouble("lead_fall_time");
+  p.travelClearance = v.getDouble("travel_clearance");
+  p.travelSpeed = v.getDouble("travel_speed");
   if (p.minSpacing >= p.maxSpacing)
     throw InputError("the minimum point spacing is not below the maximum",
                      "set --min-spacing below --max-spacing");

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "spira/base/units.h"
+#include "spira/prep/actuator_lead.h"
 
 namespace spira {
 
@@ -47,6 +48,18 @@ struct PrepParams {
   double maxSpacing = 5.0;
   // Keep the first point of every revolution (a layer start the exporter may mark). Default false.
   bool keepRevolutionStarts = false;
+
+  // --- export of the prepared path (pipeline/export_job.h) ---
+  // Lead the wire-feed channel by the feeder's lag (actuator_lead.h): each setpoint is written
+  // early enough for the modelled output to reach the planned value at its point. Default off.
+  bool leadWireFeed = false;
+  LagModel wireFeedLag;
+  // Between the sub-paths of a multi-branch plan the torch backs off along its axis by
+  // `travelClearance` (mm), rises to `travelClearance` above the plan's highest point, travels
+  // there with the arc off and comes down the same way to the next sub-path, at `travelSpeed`
+  // (mm/s). Defaults 30 mm and 50 mm/s.
+  double travelClearance = 30.0;
+  double travelSpeed = 50.0;
 };
 
 }  // namespace spira
