@@ -1,4 +1,5 @@
 // spira [FILE]                       open a part or a project
+// spira --recover [FILE]             restore the autosaved work of a session that crashed
 // spira --screenshot IMAGE FILE      render FILE in the main window, write IMAGE, exit
 // spira --version | --help
 #include <cstdlib>
@@ -17,19 +18,22 @@
 #include "spira/base/version.h"
 #include "spira/document/document.h"
 #include "spira/ui/application.h"
+#include "spira/ui/comfort_features.h"
 #include "spira/ui/main_window.h"
 #include "spira/ui/screenshot.h"
 
 namespace {
 
 constexpr const char* kUsage =
-    "Usage: spira [FILE]\n"
+    "Usage: spira [--recover] [FILE]\n"
     "       spira --screenshot IMAGE FILE\n"
     "       spira --version | --help\n"
     "\n"
     "Spira plans one continuous spiral deposition path for robotic wire-arc additive manufacturing.\n"
     "\n"
     "  FILE                    a part mesh (STL, ...) to import or a .spira project to open\n"
+    "  --recover               restore the work autosaved by a session that did not exit\n"
+    "                          normally, without asking\n"
     "  --screenshot IMAGE FILE open FILE, write the main window to IMAGE (.png, .jpg) and exit;\n"
     "                          runs without a display when xvfb-run is installed\n"
     "  --version               print the version and exit\n"
@@ -40,6 +44,7 @@ constexpr const char* kUsage =
 struct Command {
   bool help = false;
   bool version = false;
+  bool recover = false;
   std::string screenshot;  // IMAGE
   std::string file;
 };
@@ -53,6 +58,8 @@ bool parse(int argc, char** argv, Command& cmd, std::string& error)
       cmd.help = true;
     } else if (a == "--version" || a == "-v") {
       cmd.version = true;
+    } else if (a == "--recover") {
+      cmd.recover = true;
     } else if (a == "--screenshot") {
       if (i + 1 >= argc) {
         error = "--screenshot needs an image file name";
@@ -149,6 +156,9 @@ int main(int argc, char** argv)
   spira::Document doc;
   spira::ui::MainWindow window(doc);
   window.show();
+  if (cmd.recover) {
+    if (auto* comfort = window.findChild<spira::ui::ComfortFeatures*>()) comfort->offerRecovery(true);
+  }
   if (!cmd.file.empty()) {
     const QString file = QString::fromLocal8Bit(cmd.file.c_str());
     // After the event loop starts, so the window is up and can show the import's progress.

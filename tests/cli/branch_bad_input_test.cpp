@@ -68,7 +68,9 @@ TEST(CliBranchBadInput, AnUpperEdgeThatCannotBeReachedIsBadInput)
 // An upper edge shrunk to almost a point (a cone whose top radius is a hundredth of a millimetre):
 // the last revolutions collapse onto it, so the plan is refused as infeasible (exit code 4) with
 // the reason, and the report is still written for the user to look at.
-TEST(CliBranchBadInput, ADegenerateUpperEdgeIsInfeasibleNotAHang)
+// A needle-like top (0.01 mm radius): the last revolutions would pile onto themselves. Refused up
+// front with the edge's length and what to do, by every strategy, without computing anything.
+TEST(CliBranchBadInput, ADegenerateUpperEdgeIsRefusedWithItsLength)
 {
   TempDir dir;
   writeMesh(makeOpenCone(20.0, 0.01, 30.0, 64, 20), dir / "spike.stl");
@@ -76,10 +78,10 @@ TEST(CliBranchBadInput, ADegenerateUpperEdgeIsInfeasibleNotAHang)
     SCOPED_TRACE(strategy);
     const CliRun r = runCli(
         {"plan", (dir / "spike.stl").string(), "-o", (dir / strategy).string(), "--strategy", strategy});
-    EXPECT_EQ(r.exitCode, 4) << r.err << r.out;
-    EXPECT_NE(r.out.find("INFEASIBLE"), std::string::npos) << r.out;
-    EXPECT_NE(r.out.find("outside the window"), std::string::npos) << r.out;
-    EXPECT_TRUE(fs::exists(dir / strategy / "report.json"));
+    EXPECT_EQ(r.exitCode, 3) << r.err << r.out;
+    EXPECT_NE(r.err.find("upper free edge is only 0.06 mm around"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("shorter than one bead ring (16.34 mm)"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(dir / strategy / "trajectory.csv"));
   }
 }
 

@@ -162,8 +162,7 @@ DocumentState fullState()
   s.results.setGeneratrices(std::make_shared<const Generatrices>(sampleGeneratrices()));
   s.results.setSpiral(std::make_shared<const Trajectory>(sampleTrajectory(20)));
   s.results.setProcess(std::make_shared<const Trajectory>(sampleTrajectory(23)));
-  s.results.setKinematics(std::make_shared<const nlohmann::json>(
-      nlohmann::json{{"joints", {{0.1, -0.0, 3.0}, {1, 2, 3}}}, {"reachable", true}}));
+  s.results.setKinematics(std::make_shared<const KinematicsResult>(sampleKinematics(7)));
   s.results.setExport(std::make_shared<const nlohmann::json>(nlohmann::json{{"files", {"a.src", "a.dat"}}}));
   for (int i = 0; i < kStageCount; ++i)
     s.results.setReport(stageAt(i), std::make_shared<const nlohmann::json>(nlohmann::json{

@@ -18,6 +18,8 @@ CellRecord sampleCell();
 PlanSettings sampleSettings();
 Trajectory sampleTrajectory(int points);
 Generatrices sampleGeneratrices();
+// A solved motion of `points` points with awkward values (kinematics_test_data.cpp).
+KinematicsResult sampleKinematics(int points);
 // A state with every member set and every stage's result and report present.
 DocumentState fullState();
 

@@ -126,7 +126,7 @@ TEST(Invalidation, SettingAStageResultDropsLaterStagesOnly)
         r.setProcess(std::make_shared<const Trajectory>());
         break;
       case Stage::Kinematics:
-        r.setKinematics(std::make_shared<const nlohmann::json>());
+        r.setKinematics(std::make_shared<const KinematicsResult>());
         break;
       case Stage::Export:
         r.setExport(std::make_shared<const nlohmann::json>());

@@ -121,8 +121,8 @@ TEST(ProjectFile, HeaderFollowsTheDocumentedLayout)
   EXPECT_EQ(frame(1, payload, crc32(payload)), bytes);
   const nlohmann::json j = payloadOf(bytes);
   EXPECT_EQ(j.at("spira_version"), kVersion);
-  for (const char* section : {"part", "substrate", "cell", "plan", "results"})
-    EXPECT_EQ(j.at(section).at("schema"), 1);
+  for (const char* section : {"part", "substrate", "cell", "plan"}) EXPECT_EQ(j.at(section).at("schema"), 1);
+  EXPECT_EQ(j.at("results").at("schema"), 2);  // 2: typed kinematics result
   EXPECT_TRUE(j.at("part").at("mesh").at("vertices").is_binary());
   EXPECT_EQ(j.at("part").at("mesh").at("vertices").get_binary().size(), 8u * 3 * 8);
   EXPECT_EQ(j.at("part").at("mesh").at("faces").get_binary().size(), 8u * 3 * 4);

@@ -133,6 +133,37 @@ TEST(MultiBranchPlan, YTubeIsPlannedAsThreeSubPathsTrunkFirst)
   }
 }
 
+// Rows of sub-path k whose true deposit height lies outside the window [1.8, 2.2] mm widened by the
+// planner's tolerance (0.5 % of h) and 0.005 mm of numerical slack.
+size_t rowsOutsideWindow(const PlanOutput& p, size_t k)
+{
+  const PathSummary& s = p.paths[k];
+  const double tol = 0.005 * 2.0 + 0.005;
+  size_t outside = 0;
+  for (size_t q = s.firstPoint; q < s.firstPoint + s.pointCount; ++q) {
+    const double h = p.spiral.trajectory.points[q].height;
+    outside += h < 1.8 - tol || h > 2.2 + tol;
+  }
+  return outside;
+}
+
+// The trunk ends on the saddle cut, a non-planar upper edge: its termination ramps are stretched
+// per point by 1 / cos(theta), iterated to a fixed point, so every row lies in the window (a single
+// stretch per generatrix from one pass left 197 termination rows at 1.74-2.56 mm).
+// The arms start on the tilted cut, but their generatrices meet it at up to 58 degrees from its
+// normal and that lean changes abruptly around the crotch: no stretch of the start-up alone brings
+// their first rows into the window. The damped, neighbour-limited stretch keeps them far below the
+// 825 and 649 rows one first-pass stretch per generatrix left (220 and 251 today).
+TEST(MultiBranchPlan, YTubeRowsStayInTheWindow)
+{
+  const PlanOutput& p = yPlan();
+  ASSERT_EQ(p.paths.size(), 3u);
+  EXPECT_TRUE(p.paths[0].trunk);
+  EXPECT_EQ(rowsOutsideWindow(p, 0), 0u);
+  EXPECT_TRUE(p.paths[0].spiral.violations.empty());
+  for (size_t k : {1, 2}) EXPECT_LT(rowsOutsideWindow(p, k), 300u) << "arm " << k;
+}
+
 TEST(MultiBranchPlan, ReportAndCsvCarryTheSubPaths)
 {
   const PlanOutput& p = yPlan();

@@ -307,7 +307,7 @@ void Document::setProcess(std::shared_ptr<const Trajectory> r, std::shared_ptr<c
   });
 }
 
-void Document::setKinematics(std::shared_ptr<const nlohmann::json> r,
+void Document::setKinematics(std::shared_ptr<const KinematicsResult> r,
                              std::shared_ptr<const nlohmann::json> report)
 {
   changeResults([&](Results& res) {

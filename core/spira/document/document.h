@@ -95,7 +95,7 @@ class Document {
                        std::shared_ptr<const nlohmann::json> report = {});
   void setSpiral(std::shared_ptr<const Trajectory> r, std::shared_ptr<const nlohmann::json> report = {});
   void setProcess(std::shared_ptr<const Trajectory> r, std::shared_ptr<const nlohmann::json> report = {});
-  void setKinematics(std::shared_ptr<const nlohmann::json> r,
+  void setKinematics(std::shared_ptr<const KinematicsResult> r,
                      std::shared_ptr<const nlohmann::json> report = {});
   void setExport(std::shared_ptr<const nlohmann::json> r, std::shared_ptr<const nlohmann::json> report = {});
   void invalidateFrom(Stage s);

@@ -74,7 +74,7 @@ void Results::setProcess(std::shared_ptr<const Trajectory> r)
   process = std::move(r);
 }
 
-void Results::setKinematics(std::shared_ptr<const nlohmann::json> r)
+void Results::setKinematics(std::shared_ptr<const KinematicsResult> r)
 {
   invalidateFrom(Stage::Kinematics);
   kinematics = std::move(r);

@@ -7,6 +7,7 @@
 
 #include <nlohmann/json_fwd.hpp>
 
+#include "spira/document/kinematics_result.h"
 #include "spira/document/stage.h"
 #include "spira/path/trajectory.h"
 
@@ -25,15 +26,14 @@ struct FieldResult {
 // The staged results of a plan. Each is an immutable value held by shared pointer (null: not
 // computed), so copying Results is cheap and an undo snapshot holds them for free.
 //
-// Kinematics and Export are JSON payloads for now: the kinematics issue fills them (joint
-// trajectory, reachability report; written files and their checksums) and may replace them with
-// typed values; the project file stores them as they are.
+// Kinematics is the typed robot motion (kinematics_result.h). Export is a JSON payload (written
+// files and their checksums); the project file stores it as it is.
 struct Results {
   std::shared_ptr<const FieldResult> field;
   std::shared_ptr<const Generatrices> generatrices;
   std::shared_ptr<const Trajectory> spiral;   // the continuous spiral, geometry channels
   std::shared_ptr<const Trajectory> process;  // with orientation and process channels
-  std::shared_ptr<const nlohmann::json> kinematics;
+  std::shared_ptr<const KinematicsResult> kinematics;
   std::shared_ptr<const nlohmann::json> exported;
   // Per stage: what the computation reported (timings, warnings, statistics); null if none.
   std::array<std::shared_ptr<const nlohmann::json>, kStageCount> reports;
@@ -51,7 +51,7 @@ struct Results {
   void setGeneratrices(std::shared_ptr<const Generatrices> r);
   void setSpiral(std::shared_ptr<const Trajectory> r);
   void setProcess(std::shared_ptr<const Trajectory> r);
-  void setKinematics(std::shared_ptr<const nlohmann::json> r);
+  void setKinematics(std::shared_ptr<const KinematicsResult> r);
   void setExport(std::shared_ptr<const nlohmann::json> r);
   // Sets the report of a stage without touching any result.
   void setReport(Stage s, std::shared_ptr<const nlohmann::json> report);

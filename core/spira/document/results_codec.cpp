@@ -1,3 +1,5 @@
+#include <algorithm>
+
 #include <nlohmann/json.hpp>
 
 #include "spira/base/error.h"
@@ -8,12 +10,16 @@ namespace spira {
 
 namespace {
 
-constexpr int kResultsSchema = 1;
+// 2: the kinematics result is typed (kinematics_result.h); schema 1 held a JSON payload that
+// nothing produced, and it is dropped on reading (the stage is recomputed).
+constexpr int kResultsSchema = 2;
 
 // The codecs below list every member of these types. When a member is added, these fail to
 // compile as a reminder to store it too (and to bump kResultsSchema if old files lack it).
 static_assert(sizeof(void*) != 8 || sizeof(TrajectoryPoint) == 144, "update trajectoryToJson/FromJson");
 static_assert(sizeof(void*) != 8 || sizeof(Generatrices) == 80, "update generatricesToJson/FromJson");
+static_assert(sizeof(void*) != 8 || sizeof(JointPoint) == 256, "update jointsToJson/FromJson");
+static_assert(sizeof(void*) != 8 || sizeof(KinematicsCheck) == 32, "update kinematicsToJson/FromJson");
 
 nlohmann::json trajectoryToJson(const Trajectory& t)
 {
@@ -133,6 +139,168 @@ Generatrices generatricesFromJson(const nlohmann::json& j, const std::string& wh
   return g;
 }
 
+nlohmann::json limitsToJson(const std::vector<AxisLimit>& limits)
+{
+  nlohmann::json names = nlohmann::json::array();
+  std::vector<double> numbers;
+  for (const AxisLimit& a : limits) {
+    names.push_back(a.name);
+    numbers.insert(numbers.end(), {a.minDeg, a.maxDeg, a.maxSpeedDegPerS});
+  }
+  return {{"names", std::move(names)}, {"min_max_speed_deg", codec::doublesToBlob(numbers)}};
+}
+
+std::vector<AxisLimit> limitsFromJson(const nlohmann::json& j, const std::string& what)
+{
+  const auto& names = codec::field(j, "names", what);
+  if (!names.is_array()) throw InputError(what + ": 'names' is not an array", "the project file is damaged");
+  const auto numbers = sized(codec::decodeDoubleBlob(codec::field(j, "min_max_speed_deg", what), what),
+                             3 * names.size(), what);
+  std::vector<AxisLimit> out(names.size());
+  for (size_t k = 0; k < out.size(); ++k) {
+    if (!names[k].is_string())
+      throw InputError(what + ": an axis name is not text", "the project file is damaged");
+    out[k] = AxisLimit{names[k].get<std::string>(), numbers[3 * k], numbers[3 * k + 1], numbers[3 * k + 2]};
+  }
+  return out;
+}
+
+nlohmann::json jointsToJson(const JointTrajectory& t)
+{
+  const size_t n = t.points.size();
+  std::vector<double> robot, external, pose, dexterity;
+  std::vector<std::int32_t> status(n), turn(n), reachable(n), collision(n), configIndex(n);
+  robot.reserve(6 * n);
+  external.reserve(2 * n);
+  pose.reserve(12 * n);
+  // Configuration labels repeat along a path: stored once each, indexed per point.
+  std::vector<std::string> configs;
+  for (size_t i = 0; i < n; ++i) {
+    const JointPoint& p = t.points[i];
+    robot.insert(robot.end(), p.robotDeg.begin(), p.robotDeg.end());
+    external.insert(external.end(), p.externalDeg.begin(), p.externalDeg.end());
+    for (int r = 0; r < 3; ++r)
+      for (int c = 0; c < 4; ++c) pose.push_back(p.baseTcp.matrix()(r, c));
+    dexterity.push_back(p.dexterity);
+    status[i] = p.kukaStatus;
+    turn[i] = p.kukaTurn;
+    reachable[i] = p.reachable ? 1 : 0;
+    collision[i] = p.collision ? 1 : 0;
+    auto it = std::find(configs.begin(), configs.end(), p.fanucConfig);
+    if (it == configs.end()) it = configs.insert(configs.end(), p.fanucConfig);
+    configIndex[i] = static_cast<std::int32_t>(it - configs.begin());
+  }
+  return {{"count", n},
+          {"controller", t.controller},
+          {"cell_name", t.cellName},
+          {"has_positioner", t.hasPositioner},
+          {"robot_limits", limitsToJson({t.robotLimits.begin(), t.robotLimits.end()})},
+          {"external_limits", limitsToJson({t.externalLimits.begin(), t.externalLimits.end()})},
+          {"robot_deg", codec::doublesToBlob(robot)},
+          {"external_deg", codec::doublesToBlob(external)},
+          {"base_tcp", codec::doublesToBlob(pose)},
+          {"dexterity", codec::doublesToBlob(dexterity)},
+          {"kuka_status", codec::intsToBlob(status)},
+          {"kuka_turn", codec::intsToBlob(turn)},
+          {"reachable", codec::intsToBlob(reachable)},
+          {"collision", codec::intsToBlob(collision)},
+          {"fanuc_configs", configs},
+          {"fanuc_config", codec::intsToBlob(configIndex)}};
+}
+
+JointTrajectory jointsFromJson(const nlohmann::json& j, const std::string& what)
+{
+  const std::int64_t count = codec::intField(j, "count", what);
+  if (count < 0) throw InputError(what + ": negative point count", "the project file is damaged");
+  const auto n = static_cast<size_t>(count);
+  auto doubles = [&](const char* key, size_t per) {
+    return sized(codec::decodeDoubleBlob(codec::field(j, key, what), what + " " + key), per * n, what);
+  };
+  auto ints = [&](const char* key) {
+    return sized(codec::blobToInts(codec::field(j, key, what), what + " " + key), n, what);
+  };
+  JointTrajectory t;
+  t.controller = codec::stringField(j, "controller", what);
+  t.cellName = codec::stringField(j, "cell_name", what);
+  t.hasPositioner = codec::boolField(j, "has_positioner", what);
+  const auto robotLimits = limitsFromJson(codec::field(j, "robot_limits", what), what + " robot limits");
+  const auto externalLimits =
+      limitsFromJson(codec::field(j, "external_limits", what), what + " external limits");
+  if (robotLimits.size() != t.robotLimits.size() || externalLimits.size() != t.externalLimits.size())
+    throw InputError(what + ": wrong number of axis limits", "the project file is damaged");
+  std::copy(robotLimits.begin(), robotLimits.end(), t.robotLimits.begin());
+  std::copy(externalLimits.begin(), externalLimits.end(), t.externalLimits.begin());
+  const auto robot = doubles("robot_deg", 6), external = doubles("external_deg", 2),
+             pose = doubles("base_tcp", 12), dexterity = doubles("dexterity", 1);
+  const auto status = ints("kuka_status"), turn = ints("kuka_turn"), reachable = ints("reachable"),
+             collision = ints("collision"), configIndex = ints("fanuc_config");
+  const auto& configs = codec::field(j, "fanuc_configs", what);
+  if (!configs.is_array())
+    throw InputError(what + ": 'fanuc_configs' is not an array", "the project file is damaged");
+  t.points.resize(n);
+  for (size_t i = 0; i < n; ++i) {
+    JointPoint& p = t.points[i];
+    std::copy_n(robot.begin() + static_cast<std::ptrdiff_t>(6 * i), 6, p.robotDeg.begin());
+    std::copy_n(external.begin() + static_cast<std::ptrdiff_t>(2 * i), 2, p.externalDeg.begin());
+    for (int r = 0; r < 3; ++r)
+      for (int c = 0; c < 4; ++c) p.baseTcp.matrix()(r, c) = pose[12 * i + static_cast<size_t>(4 * r + c)];
+    p.dexterity = dexterity[i];
+    p.kukaStatus = status[i];
+    p.kukaTurn = turn[i];
+    p.reachable = reachable[i] != 0;
+    p.collision = collision[i] != 0;
+    if (configIndex[i] < 0 || static_cast<size_t>(configIndex[i]) >= configs.size() ||
+        !configs[static_cast<size_t>(configIndex[i])].is_string())
+      throw InputError(what + ": a configuration index is out of range", "the project file is damaged");
+    p.fanucConfig = configs[static_cast<size_t>(configIndex[i])].get<std::string>();
+  }
+  return t;
+}
+
+nlohmann::json kinematicsToJson(const KinematicsResult& k)
+{
+  const size_t n = k.checks.size();
+  std::vector<std::int32_t> reachable(n), collision(n);
+  std::vector<double> dexterity(n), margin(n);
+  for (size_t i = 0; i < n; ++i) {
+    reachable[i] = k.checks[i].reachable ? 1 : 0;
+    collision[i] = k.checks[i].collision ? 1 : 0;
+    dexterity[i] = k.checks[i].dexterity;
+    margin[i] = k.checks[i].limitMarginDeg;
+  }
+  return {{"joints", jointsToJson(k.joints)},
+          {"path", trajectoryToJson(k.path)},
+          {"axes", limitsToJson(k.axes)},
+          {"checks",
+           {{"count", n},
+            {"reachable", codec::intsToBlob(reachable)},
+            {"collision", codec::intsToBlob(collision)},
+            {"dexterity", codec::doublesToBlob(dexterity)},
+            {"limit_margin_deg", codec::doublesToBlob(margin)}}},
+          {"report", {{"payload", k.report}}}};
+}
+
+KinematicsResult kinematicsFromJson(const nlohmann::json& j, const std::string& what)
+{
+  KinematicsResult k;
+  k.joints = jointsFromJson(codec::field(j, "joints", what), what + " joints");
+  k.path = trajectoryFromJson(codec::field(j, "path", what), what + " path");
+  k.axes = limitsFromJson(codec::field(j, "axes", what), what + " axes");
+  const auto& c = codec::field(j, "checks", what);
+  const std::string cw = what + " checks";
+  const std::int64_t count = codec::intField(c, "count", cw);
+  if (count < 0) throw InputError(cw + ": negative point count", "the project file is damaged");
+  const auto n = static_cast<size_t>(count);
+  const auto reachable = sized(codec::blobToInts(codec::field(c, "reachable", cw), cw), n, cw);
+  const auto collision = sized(codec::blobToInts(codec::field(c, "collision", cw), cw), n, cw);
+  const auto dexterity = sized(codec::decodeDoubleBlob(codec::field(c, "dexterity", cw), cw), n, cw);
+  const auto margin = sized(codec::decodeDoubleBlob(codec::field(c, "limit_margin_deg", cw), cw), n, cw);
+  for (size_t i = 0; i < n; ++i)
+    k.checks.push_back(KinematicsCheck{reachable[i] != 0, dexterity[i], margin[i], collision[i] != 0});
+  k.report = codec::field(codec::field(j, "report", what), "payload", what + " report");
+  return k;
+}
+
 template <class T, class F>
 nlohmann::json orNull(const std::shared_ptr<const T>& p, F toJson)
 {
@@ -151,9 +319,9 @@ nlohmann::json resultsToJson(const Results& r)
   j["generatrices"] = orNull(r.generatrices, generatricesToJson);
   j["spiral"] = orNull(r.spiral, trajectoryToJson);
   j["process"] = orNull(r.process, trajectoryToJson);
+  j["kinematics"] = orNull(r.kinematics, kinematicsToJson);
   // Payloads are wrapped so that a stored JSON null stays distinct from "not computed".
   const auto wrap = [](const nlohmann::json& p) { return nlohmann::json{{"payload", p}}; };
-  j["kinematics"] = orNull(r.kinematics, wrap);
   j["export"] = orNull(r.exported, wrap);
   nlohmann::json reports = nlohmann::json::object();
   for (int i = 0; i < kStageCount; ++i)
@@ -165,7 +333,7 @@ nlohmann::json resultsToJson(const Results& r)
 Results resultsFromJson(const nlohmann::json& j)
 {
   const std::string what = "project results";
-  codec::checkSchema(j, kResultsSchema, what);
+  const int schema = codec::checkSchema(j, kResultsSchema, what);
   Results r;
   auto member = [&](const char* key) -> const nlohmann::json* {
     const auto& v = codec::field(j, key, what);
@@ -187,7 +355,8 @@ Results resultsFromJson(const nlohmann::json& j)
     r.spiral = std::make_shared<const Trajectory>(trajectoryFromJson(*t, what + " spiral"));
   if (const auto* t = member("process"))
     r.process = std::make_shared<const Trajectory>(trajectoryFromJson(*t, what + " process"));
-  if (const auto* k = member("kinematics")) r.kinematics = payload(*k, "kinematics");
+  if (const auto* k = member("kinematics"); k && schema >= 2)
+    r.kinematics = std::make_shared<const KinematicsResult>(kinematicsFromJson(*k, what + " kinematics"));
   if (const auto* e = member("export")) r.exported = payload(*e, "export");
   const auto& reports = codec::field(j, "reports", what);
   if (!reports.is_object())

@@ -1,7 +1,9 @@
 #include "spira/path/spiral_builder.h"
 
 #include <algorithm>
+#include <cmath>
 #include <sstream>
+#include <utility>
 
 #include "spira/base/error.h"
 #include "spira/path/arc_length_polyline.h"
@@ -23,15 +25,41 @@ struct Layout {
 };
 
 // Ramp steps are nominal deposits, but the true height is the step times cos(theta), theta the
-// angle between the generatrix and the build direction. Where the layers lean on the generatrices
-// (a non-planar upper edge, a converging dome) a ramp step of h_min would lay less than h_min. A
-// first pass measures 1 / cos(theta) on each generatrix over the start-up and over the termination;
-// the second pass stretches that generatrix's ramp steps by it, so the true heights are the nominal
-// ones. The modulated phase needs no such care: its steps come out of the layer count.
+// angle between the generatrix and the build direction (spec §3.5). Where the layers lean on the
+// generatrices (a tilted or non-planar base such as a branch's saddle cut, a non-planar upper edge,
+// a converging dome) a ramp step of h_min would lay less than h_min. Each ramp point therefore gets
+// its own stretch 1 / cos(theta), per generatrix AND per revolution: the lean is largest on the
+// revolutions next to the leaning edge and fades away from it, so one factor per generatrix (the
+// largest) over-stretches the revolutions that do not lean, and the surplus climb, different from
+// one generatrix to the next, leaves a step in the layer that the modulated phase carries up (spec
+// §3.2-3.3: the start-up must remove a height step, not make one). See stretchRamps().
 struct RampScales {
-  std::vector<double> start, end;
-  explicit RampScales(int n) : start(n, 1.0), end(n, 1.0) {}
+  int n = 0;
+  std::vector<double> start, end;  // [r * n + i]: start-up / termination revolution r, generatrix i
+  RampScales(int points, int startRevs, int endRevs)
+      : n(points),
+        start(static_cast<size_t>(startRevs) * points, 1.0),
+        end(static_cast<size_t>(endRevs) * points, 1.0)
+  {
+  }
+  double startAt(int r, int i) const { return start[static_cast<size_t>(r) * n + i]; }
+  double endAt(int r, int i) const { return end[static_cast<size_t>(r) * n + i]; }
 };
+
+// Stretched length of the start-up and of the termination on generatrix i.
+double startLength(const StartupProfile& p, const RampScales& sc, int i, double u)
+{
+  double sum = 0.0;
+  for (int r = 0; r < p.startRevolutions(); ++r) sum += p.startStep(r, u) * sc.startAt(r, i);
+  return sum;
+}
+
+double endLength(const StartupProfile& p, const RampScales& sc, int i, double u)
+{
+  double sum = 0.0;
+  for (int r = 0; r < p.endRevolutions(); ++r) sum += p.endStep(r, u) * sc.endAt(r, i);
+  return sum;
+}
 
 void throwTooShort(size_t i, double length, double ramps, double hMin)
 {
@@ -56,13 +84,13 @@ Layout layOut(const std::vector<double>& lengths, const SpiralSettings& s, const
   std::vector<double> startLen(n), modLen(n);
   const auto rampLength = [&](const StartupProfile& p, int i) {
     const double u = static_cast<double>(i) / (n - 1);
-    return p.startLength(u) * scale.start[i] + (ramps ? p.endLength(u) * scale.end[i] : 0.0);
+    return startLength(p, scale, i, u) + (ramps ? endLength(p, scale, i, u) : 0.0);
   };
   // Lays the ramps for seam step c (0: h); returns the layer count they leave room for.
   const auto measure = [&](double c) {
     prof = StartupProfile(s.h, s.hMin, s.hMax, s.startupTransition, n, c);
     for (int i = 0; i < n; ++i) {
-      startLen[i] = prof.startLength(static_cast<double>(i) / (n - 1)) * scale.start[i];
+      startLen[i] = startLength(prof, scale, i, static_cast<double>(i) / (n - 1));
       modLen[i] = lengths[i] - rampLength(prof, i);
       if (modLen[i] < s.hMin * (1.0 - 1e-9)) throwTooShort(i, lengths[i], lengths[i] - modLen[i], s.hMin);
     }
@@ -121,10 +149,10 @@ Layout layOut(const std::vector<double>& lengths, const SpiralSettings& s, const
     int k = 0;
     double acc = 0.0;
     for (int r = 0; r < report.nStartupRevolutions; ++r, ++k)
-      lay.s[k * n + i] = acc += prof.startStep(r, u) * scale.start[i];
+      lay.s[k * n + i] = acc += prof.startStep(r, u) * scale.startAt(r, i);
     for (int m = 1; m <= nLayers; ++m, ++k) lay.s[k * n + i] = acc = startLen[i] + m * d;
     for (int r = 0; r < report.nEndRevolutions; ++r, ++k)
-      lay.s[k * n + i] = acc += prof.endStep(r, u) * scale.end[i];
+      lay.s[k * n + i] = acc += prof.endStep(r, u) * scale.endAt(r, i);
     lay.s[(lay.revolutions - 1) * n + i] = lengths[i];  // exactly on the edge, whatever the rounding
   }
   return lay;
@@ -234,26 +262,79 @@ SpiralResult buildPass(const Generatrices& g, const std::vector<ArcLengthPolylin
   return result;
 }
 
-// Fills `scales` with 1 / cos(theta) per generatrix over the start-up and over the termination of
-// `pass` (the largest, so that every ramp point reaches its nominal height). Returns whether any
-// generatrix needs stretching by more than kStretchFloor: below it the heights are within 0.01 % of
-// nominal, far inside any tolerance, and the layout is left exactly as designed.
-bool stretchRamps(const SpiralResult& pass, const std::vector<double>& cosines, RampScales& scales)
+// Neighbouring generatrices' scales on one ramp revolution (a circle) may differ by at most
+// `limit`; a scale is lowered towards its neighbour, never raised above its own target.
+void limitNeighbours(double* row, int n, double limit)
+{
+  for (int sweep = 0; sweep < 2; ++sweep) {
+    for (int i = 1; i < 2 * n; ++i) row[i % n] = std::min(row[i % n], row[(i - 1) % n] + limit);
+    for (int i = 2 * n - 2; i >= 0; --i) row[i % n] = std::min(row[i % n], row[(i + 1) % n] + limit);
+  }
+}
+
+// Where a generatrix's scales hardly change over the ramp revolutions (by less than `flat`: the
+// heights within 0.1 %), they all take the largest. Per-revolution scales that differ by such
+// noise still break the design's ramp lengths (start plus end the same on every generatrix) by a
+// little that differs from one generatrix to the next, and close to a pole, where neighbours are
+// fractions of a millimetre apart, that little tilts the layers (spec §3.5) more than it gains.
+void flattenNearlyUniform(std::vector<double>& scales, int n, double flat)
+{
+  const size_t revs = scales.size() / static_cast<size_t>(n);
+  for (int i = 0; i < n; ++i) {
+    double lo = scales[static_cast<size_t>(i)], hi = lo;
+    for (size_t r = 1; r < revs; ++r) {
+      lo = std::min(lo, scales[r * n + i]);
+      hi = std::max(hi, scales[r * n + i]);
+    }
+    if (hi - lo < flat)
+      for (size_t r = 0; r < revs; ++r) scales[r * n + i] = hi;
+  }
+}
+
+// One step of the ramp stretch's fixed-point iteration (see RampScales). Each ramp point's target
+// scale is 1 / cos(theta) measured on `pass`, the layout built with the current scales, so that its
+// true height (nominal step x scale x cos(theta), spec §3.5) is the nominal one. Stretching a point
+// moves it along its generatrix, which turns its layer and changes theta, so the iteration is damped
+// (the scales move half-way to their targets) and kept smooth around each revolution
+// (limitNeighbours). Without that limit, generatrices whose lean changes abruptly (a branch's arm
+// on its tilted saddle cut) stretch one side of a revolution far more than the other, the step
+// between them turns the layer nearly parallel to the generatrices, theta grows and the iteration
+// runs away. The stretch is capped at kMaxStretch (theta = 60 degrees). Stretches within
+// kStretchFloor of 1 (the height within 0.01 % of nominal) are left at 1, so a part whose layers do
+// not lean keeps exactly the designed layout. Returns the largest change of a scale.
+double stretchRamps(const SpiralResult& pass, const std::vector<double>& cosines, RampScales& scales)
 {
   constexpr double kStretchFloor = 1e-4;
-  bool any = false;
+  constexpr double kRelax = 0.5;
+  constexpr double kNeighbourStretch = 0.03;
+  constexpr double kFlatStretch = 1e-3;
+  constexpr double kMaxStretch = 2.0;
+  const SpiralReport& rep = pass.report;
   const auto& pts = pass.trajectory.points;
-  const size_t last = pass.report.collapsedRevolutions > 0 ? pts.size() - 1 : pts.size();
+  const size_t last = rep.collapsedRevolutions > 0 ? pts.size() - 1 : pts.size();
+  const int endFirst = rep.nStartupRevolutions + rep.nLayers;
+  RampScales next = scales;
   for (size_t q = 0; q < last; ++q) {
-    const SpiralPhase phase = phaseOfRevolution(pts[q].revolution, pass.report);
+    const TrajectoryPoint& p = pts[q];
+    const SpiralPhase phase = phaseOfRevolution(p.revolution, rep);
     if (phase == SpiralPhase::Modulated || cosines[q] <= 0.0) continue;
-    const double stretch = 1.0 / cosines[q];
-    if (stretch <= 1.0 + kStretchFloor) continue;
-    auto& target = phase == SpiralPhase::StartUp ? scales.start : scales.end;
-    target[pts[q].generatrix] = std::max(target[pts[q].generatrix], stretch);
-    any = true;
+    const bool start = phase == SpiralPhase::StartUp;
+    const int r = start ? p.revolution : p.revolution - endFirst;
+    const size_t at = static_cast<size_t>(r) * scales.n + p.generatrix;
+    double stretch = std::min(1.0 / cosines[q], kMaxStretch);
+    if (stretch <= 1.0 + kStretchFloor) stretch = 1.0;
+    const double old = (start ? scales.start : scales.end)[at];
+    (start ? next.start : next.end)[at] = old + kRelax * (stretch - old);
   }
-  return any;
+  const int n = scales.n;
+  double change = 0.0;
+  for (auto [now, was] : {std::pair(&next.start, &scales.start), std::pair(&next.end, &scales.end)}) {
+    for (size_t r = 0; r * n < now->size(); ++r) limitNeighbours(now->data() + r * n, n, kNeighbourStretch);
+    flattenNearlyUniform(*now, n, kFlatStretch);
+    for (size_t k = 0; k < now->size(); ++k) change = std::max(change, std::abs((*now)[k] - (*was)[k]));
+  }
+  scales = std::move(next);
+  return change;
 }
 
 }  // namespace
@@ -275,11 +356,32 @@ SpiralResult buildSpiral(const Generatrices& generatrices, const SpiralSettings&
     lengths[i] = arcs[i].length();
   }
 
-  RampScales scales(n);
+  // The stretch is a fixed point: stretching a ramp point moves it, which turns its layer and so
+  // changes the theta it is measured with. A few passes settle it (the change shrinks roughly
+  // geometrically); the pass with the fewest window violations is kept (the later on a tie), so a
+  // stretch that does not settle can never make the spiral worse than the unstretched layout.
+  constexpr int kMaxPasses = 12;
+  constexpr double kSettled = 1e-4;
+  const int rampRevs = prof.startRevolutions();
+  RampScales scales(n, rampRevs, rampRevs);
   std::vector<double> cosines;
   SpiralResult result = buildPass(g, arcs, lengths, settings, scales, cosines, progress);
-  if (stretchRamps(result, cosines, scales))
-    result = buildPass(g, arcs, lengths, settings, scales, cosines, progress);
+  SpiralResult best;
+  bool stretched = false;
+  for (int pass = 1; pass < kMaxPasses; ++pass) {
+    if (stretchRamps(result, cosines, scales) <= kSettled) break;
+    SpiralResult next;
+    try {
+      next = buildPass(g, arcs, lengths, settings, scales, cosines, progress);
+    } catch (const InputError&) {
+      break;  // the stretched ramps no longer fit on a short generatrix: keep the layouts that did
+    }
+    if (!stretched || result.report.violations.size() < best.report.violations.size())
+      best = std::move(result);
+    stretched = true;
+    result = std::move(next);
+  }
+  if (stretched && best.report.violations.size() < result.report.violations.size()) result = std::move(best);
   result.report.normalsEstimated = prep.normalsEstimated();
   progress.report(1.0, "spiral");
   return result;

@@ -1,5 +1,8 @@
 #include "spira/planning/planner.h"
 
+#include <iomanip>
+#include <sstream>
+
 #include <algorithm>
 
 #include "spira/base/error.h"
@@ -39,6 +42,21 @@ Settings settingsFor(const PluginRegistry& registry, const PlanRequest& request)
   s.decomposerParams = paramsFor(request, request.decomposerId).withDefaults(s.decomposer->schema());
   s.decomposer->schema().validate(s.decomposerParams);
   return s;
+}
+
+// An open part ends on its upper free edge, so the last revolutions follow it: an edge shorter than
+// one bead ring makes them pile onto themselves (a degenerate, needle-like top).
+void checkUpperEdge(const PartTopology& topology, const Settings& settings)
+{
+  if (!topology.upper || topology.upper->length >= settings.spiral.minRevolutionLength) return;
+  std::ostringstream what;
+  what << std::fixed << std::setprecision(2) << "the part's upper free edge is only "
+       << topology.upper->length << " mm around, shorter than one bead ring ("
+       << settings.spiral.minRevolutionLength << " mm): the last revolutions would pile onto themselves";
+  throw InputError(
+      what.str(),
+      "cut the part below its narrow top, close the top (a closed part ends at a closure point), "
+      "or lower the spiral's 'Smallest closing ring'");
 }
 
 void computeField(const PlanRequest& request, PlanOutput& out, Progress& progress)
@@ -120,6 +138,7 @@ PlanOutput planMonoBranch(const PluginRegistry& registry, const PlanRequest& req
   StageClock clock(out.timings);
   out.topology =
       findPartTopology(request.report, request.mesh, request.substrateZ, request.lowerLoopOverride);
+  checkUpperEdge(out.topology, settings);
   clock.lap("topology");
   computeField(request, out, progress);
   clock.lap("field");
@@ -134,6 +153,7 @@ PlanOutput planPart(const PluginRegistry& registry, const PlanRequest& request, 
   StageClock clock(out.timings);
   out.topology = findPartTopology(request.report, request.mesh, request.substrateZ, request.lowerLoopOverride,
                                   /*allowBranches=*/true);
+  checkUpperEdge(out.topology, settings);
   clock.lap("topology");
   const double perimeter = branchPerimeter(out, settings);
   bool branches = out.topology.branched;

@@ -1,32 +1,23 @@
-// The one translation unit that includes CGAL's mean curvature flow skeletonization (slow to
-// compile); everything else in Spira sees only mcf_skeleton.h.
-// GCC 12 flags std::map internals inlined into CGAL's collapse_short_edges() as dangling
-// pointers (a known false positive of -Wdangling-pointer); the warning is about the library's
-// code, so it is silenced for this unit only.
-#if defined(__GNUC__) && !defined(__clang__) && __GNUC__ >= 12
-#pragma GCC diagnostic ignored "-Wdangling-pointer"
-#endif
-#ifndef CGAL_EIGEN3_ENABLED
-#define CGAL_EIGEN3_ENABLED
-#endif
-
+// Validation, capping and simplification around the mean curvature flow; the flow itself runs in
+// its own translation unit (mcf_flow.cpp), which everything here reaches through plain arrays.
 #include "spira/skeleton/mcf_skeleton.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Mean_curvature_flow_skeletonization.h>
-#include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/Surface_mesh_simplification/Policies/Edge_collapse/Count_stop_predicate.h>
 #include <CGAL/Surface_mesh_simplification/Policies/Edge_collapse/Edge_length_cost.h>
 #include <CGAL/Surface_mesh_simplification/Policies/Edge_collapse/Midpoint_placement.h>
 #include <CGAL/Surface_mesh_simplification/edge_collapse.h>
+#include <CGAL/boost/graph/helpers.h>
 
 #include "spira/base/error.h"
 #include "spira/mesh/mesh_report.h"
 #include "spira/skeleton/capped_surface.h"
+#include "spira/skeleton/mcf_flow.h"
 #include "spira/skeleton/skeleton_centering.h"
 #include "spira/skeleton/skeleton_pruning.h"
 
@@ -36,7 +27,6 @@ namespace {
 
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using SurfaceMesh = CGAL::Surface_mesh<Kernel::Point_3>;
-using Skeletonization = CGAL::Mean_curvature_flow_skeletonization<SurfaceMesh>;
 
 void requireSkeletonizable(const MeshReport& report)
 {
@@ -79,17 +69,33 @@ SurfaceMesh toSurfaceMesh(const TriangleMesh& mesh)
   return sm;
 }
 
-SkeletonGraph toGraph(const Skeletonization::Skeleton& skeleton)
+// The surface as plain arrays for the flow; indices are contiguous once garbage is collected.
+FlowSurface toFlowSurface(SurfaceMesh& sm)
+{
+  sm.collect_garbage();
+  FlowSurface out;
+  out.vertices.reserve(sm.number_of_vertices());
+  for (auto v : sm.vertices()) {
+    const auto& p = sm.point(v);
+    out.vertices.push_back({p.x(), p.y(), p.z()});
+  }
+  out.faces.reserve(sm.number_of_faces());
+  for (auto f : sm.faces()) {
+    std::array<int, 3> face{};
+    int k = 0;
+    for (auto v : CGAL::vertices_around_face(sm.halfedge(f), sm))
+      face[static_cast<size_t>(k++)] = static_cast<int>(v);
+    out.faces.push_back(face);
+  }
+  return out;
+}
+
+SkeletonGraph toGraph(const FlowSkeleton& skeleton)
 {
   SkeletonGraph g;
-  g.nodes.reserve(boost::num_vertices(skeleton));
-  for (auto v : CGAL::make_range(boost::vertices(skeleton))) {
-    const auto& p = skeleton[v].point;
-    g.nodes.emplace_back(p.x(), p.y(), p.z());
-  }
-  for (auto e : CGAL::make_range(boost::edges(skeleton)))
-    g.edges.push_back(
-        {static_cast<int>(boost::source(e, skeleton)), static_cast<int>(boost::target(e, skeleton))});
+  g.nodes.reserve(skeleton.nodes.size());
+  for (const auto& p : skeleton.nodes) g.nodes.emplace_back(p[0], p[1], p[2]);
+  for (const auto& e : skeleton.edges) g.edges.push_back({e[0], e[1]});
   return g;
 }
 
@@ -131,39 +137,26 @@ SkeletonResult computeCurveSkeleton(const TriangleMesh& mesh, const SkeletonOpti
   }
   out.facesContracted = sm.number_of_faces();
   progress.report(0.05, "skeleton: medial poles");
-  Skeletonization mcf(sm);
-  mcf.set_is_medially_centered(options.mediallyCentered);
-  mcf.set_quality_speed_tradeoff(options.qualitySpeedTradeoff);
-  mcf.set_medially_centered_speed_tradeoff(options.medialSpeedTradeoff);
-  mcf.set_area_variation_factor(options.areaVariation);
-  mcf.set_max_iterations(options.maxIterations);
-
-  // contract_until_convergence(), one step at a time so that the loop can report and be cancelled.
-  const double originalArea = CGAL::Polygon_mesh_processing::area(sm);
-  double lastArea = 0.0;
-  while (out.iterations < options.maxIterations) {
-    progress.checkCancel();
-    mcf.contract();
-    ++out.iterations;
-    const double area = CGAL::Polygon_mesh_processing::area(mcf.meso_skeleton());
-    const double change = std::abs(lastArea - area) / originalArea;
-    // The area falls roughly geometrically; its log tells how far along the flow is.
-    const double fraction = std::log(std::max(area, 1e-300) / originalArea) / std::log(options.areaVariation);
-    progress.report(std::clamp(fraction, 0.05, 0.95), "skeleton: contraction");
-    if (change < options.areaVariation) {
-      out.converged = true;
-      break;
-    }
-    lastArea = area;
-  }
+  FlowSettings flow;
+  flow.maxIterations = options.maxIterations;
+  flow.areaVariation = options.areaVariation;
+  flow.mediallyCentered = options.mediallyCentered;
+  flow.qualitySpeedTradeoff = options.qualitySpeedTradeoff;
+  flow.medialSpeedTradeoff = options.medialSpeedTradeoff;
+  const FlowSkeleton skeleton = runMeanCurvatureFlow(
+      toFlowSurface(sm), flow, [&] { progress.checkCancel(); },
+      [&](double areaRatio) {
+        // The area falls roughly geometrically; its log tells how far along the flow is.
+        const double fraction = std::log(std::max(areaRatio, 1e-300)) / std::log(options.areaVariation);
+        progress.report(std::clamp(fraction, 0.05, 0.95), "skeleton: contraction");
+      });
+  out.iterations = skeleton.iterations;
+  out.converged = skeleton.converged;
   if (!out.converged)
     out.warnings.push_back("the skeleton's contraction stopped at the limit of " +
                            std::to_string(options.maxIterations) +
                            " steps before it settled; the skeleton may be rough");
-
-  Skeletonization::Skeleton skeleton;
-  mcf.convert_to_skeleton(skeleton);
-  if (boost::num_vertices(skeleton) == 0)
+  if (skeleton.nodes.empty())
     throw AlgorithmError("the mean curvature flow left no skeleton for this part",
                          "check that the part is a thin-walled shell and not a flat sheet");
   const double tolerance =

@@ -14,6 +14,8 @@ int main(int argc, char** argv)
   testing::InitGoogleTest(&argc, argv);
   QTemporaryDir settingsDir;
   qputenv("XDG_CONFIG_HOME", settingsDir.path().toLocal8Bit());
+  // Autosave, presets and samples (QStandardPaths::AppDataLocation) stay private too.
+  qputenv("XDG_DATA_HOME", settingsDir.path().toLocal8Bit());
   spira::ui::prepareApplication();
   QApplication app(argc, argv);
   spira::ui::configureApplication(app);

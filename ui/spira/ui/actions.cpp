@@ -47,6 +47,11 @@ Actions Actions::create(QMainWindow* w, const QList<QAction*>& panelToggles)
   a.save->setIcon(st->standardIcon(QStyle::SP_DialogSaveButton));
   a.saveAs = make(w, QObject::tr("Save &As..."), QObject::tr("Save the project under a new name"),
                   {QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_S)});
+  a.exportProgram =
+      make(w, QObject::tr("&Export Robot Program..."),
+           QObject::tr("Write the plan as a KUKA KRL or FANUC TP program, with a preview first"),
+           {QKeySequence(Qt::CTRL | Qt::Key_E)});
+  a.exportProgram->setObjectName(QStringLiteral("exportProgramAction"));
   a.quit = make(w, QObject::tr("&Quit"), QObject::tr("Quit Spira"), {QKeySequence(Qt::CTRL | Qt::Key_Q)});
   a.quit->setMenuRole(QAction::QuitRole);
 
@@ -82,6 +87,10 @@ Actions Actions::create(QMainWindow* w, const QList<QAction*>& panelToggles)
                       {QKeySequence(Qt::Key_Escape)});
   a.cancelPlan->setIcon(st->standardIcon(QStyle::SP_BrowserStop));
   a.cancelPlan->setEnabled(false);
+  a.compareStrategies =
+      make(w, QObject::tr("Compare &Strategies..."),
+           QObject::tr("Plan the part with every strategy and compare their deposit heights side by side"));
+  a.compareStrategies->setObjectName(QStringLiteral("compareStrategiesAction"));
   a.about = make(w, QObject::tr("&About Spira"), QObject::tr("Version and licence"));
   a.about->setMenuRole(QAction::AboutRole);
   a.aboutQt = make(w, QObject::tr("About &Qt"), QObject::tr("Qt version and licence"));
@@ -97,6 +106,8 @@ Actions Actions::create(QMainWindow* w, const QList<QAction*>& panelToggles)
   file->addSeparator();
   file->addAction(a.save);
   file->addAction(a.saveAs);
+  file->addSeparator();
+  file->addAction(a.exportProgram);
   file->addSeparator();
   file->addAction(a.quit);
 
@@ -120,6 +131,8 @@ Actions Actions::create(QMainWindow* w, const QList<QAction*>& panelToggles)
   QMenu* planMenu = bar->addMenu(QObject::tr("&Plan"));
   planMenu->addAction(a.plan);
   planMenu->addAction(a.cancelPlan);
+  planMenu->addSeparator();
+  planMenu->addAction(a.compareStrategies);
 
   QMenu* help = bar->addMenu(QObject::tr("&Help"));
   help->addAction(a.about);

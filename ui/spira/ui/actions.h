@@ -16,6 +16,7 @@ struct Actions {
   QAction* openProject = nullptr;
   QAction* save = nullptr;
   QAction* saveAs = nullptr;
+  QAction* exportProgram = nullptr;
   QAction* quit = nullptr;
   QAction* undo = nullptr;
   QAction* redo = nullptr;
@@ -29,6 +30,7 @@ struct Actions {
   QAction* fitView = nullptr;
   QAction* plan = nullptr;
   QAction* cancelPlan = nullptr;
+  QAction* compareStrategies = nullptr;
   QAction* about = nullptr;
   QAction* aboutQt = nullptr;
   QMenu* recentMenu = nullptr;  // filled by RecentFiles

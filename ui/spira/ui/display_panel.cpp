@@ -93,6 +93,12 @@ DisplayPanel::DisplayPanel(SceneView* view, ProcessChart* chart, QAction* chartT
   auto* checks = new QHBoxLayout;
   checks->addWidget(spiral_);
   checks->addWidget(tube_);
+  frames_ = new QCheckBox(tr("Torch frames"), spiralBox_);
+  frames_->setObjectName(QStringLiteral("framesCheck"));
+  frames_->setToolTip(
+      tr("Draw the torch frame (x red: travel, y green, z blue: torch axis) every few points"));
+  connect(frames_, &QCheckBox::toggled, this, &DisplayPanel::framesToggled);
+  checks->addWidget(frames_);
   checks->addStretch(1);
   spiralForm->addRow(checks);
   channel_ = new QComboBox(spiralBox_);

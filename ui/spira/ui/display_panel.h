@@ -47,6 +47,7 @@ class DisplayPanel : public QDockWidget {
   QLabel* revolutionLabel() const { return revolutionText_; }
   QCheckBox* spiralCheck() const { return spiral_; }
   QCheckBox* tubeCheck() const { return tube_; }
+  QCheckBox* framesCheck() const { return frames_; }
   QCheckBox* generatricesCheck() const { return generatrices_; }
   QDoubleSpinBox* fieldMin() const { return fieldMin_; }
   QDoubleSpinBox* fieldMax() const { return fieldMax_; }
@@ -55,6 +56,8 @@ class DisplayPanel : public QDockWidget {
  signals:
   // The shown build now ends at arc length `s` (mm) along the path.
   void buildCutChanged(double s);
+  // The user asked for the torch frames to be drawn (or hidden).
+  void framesToggled(bool on);
 
  private:
   void applyFieldRange();
@@ -75,6 +78,7 @@ class DisplayPanel : public QDockWidget {
   QCheckBox* spiral_ = nullptr;
   QComboBox* channel_ = nullptr;
   QCheckBox* tube_ = nullptr;
+  QCheckBox* frames_ = nullptr;
   QSlider* revolution_ = nullptr;
   QLabel* revolutionText_ = nullptr;
   bool updating_ = false;

@@ -19,10 +19,16 @@
 #include "builtin_plugins.h"
 #include "spira/base/version.h"
 #include "spira/ui/application.h"
+#include "spira/ui/comfort_features.h"
 #include "spira/ui/display_panel.h"
 #include "spira/ui/document_tree.h"
+#include "spira/ui/cell_workspace.h"
+#include "spira/ui/help_dialogs.h"
+#include "spira/ui/joint_chart.h"
 #include "spira/ui/log_panel.h"
+#include "spira/ui/path_inspector.h"
 #include "spira/ui/plan_panel.h"
+#include "spira/ui/point_selection.h"
 #include "spira/ui/process_chart.h"
 #include "spira/ui/recent_files.h"
 #include "spira/ui/scene_view.h"
@@ -82,6 +88,26 @@ MainWindow::MainWindow(Document& doc, MainWindowOptions options, QWidget* parent
     });
   });
 
+  selection_ = new PointSelection(this);
+  jointChart_ = new JointChart(selection_, this);
+  jointDock_ = new QDockWidget(tr("Joint Chart"), this);
+  jointDock_->setObjectName("jointDock");
+  jointDock_->setWidget(jointChart_);
+  addDockWidget(Qt::BottomDockWidgetArea, jointDock_);
+  tabifyDockWidget(log_, jointDock_);
+  jointDock_->hide();
+  QAction* jointToggle = jointDock_->toggleViewAction();
+  jointToggle->setText(tr("&Joint Chart"));
+  jointToggle->setToolTip(tr("The robot's and positioner's axes along the path, with their limits"));
+  jointToggle->setShortcut(QKeySequence(Qt::Key_J));
+  connect(jointToggle, &QAction::toggled, this, [this](bool on) {
+    if (!on) return;
+    QTimer::singleShot(0, this, [this] {
+      jointDock_->raise();
+      if (jointDock_->height() < 330) resizeDocks({jointDock_}, {340}, Qt::Vertical);
+    });
+  });
+
   planPanel_ = new PlanPanel(doc_, builtinRegistry(), this);
   addDockWidget(Qt::RightDockWidgetArea, planPanel_);
   display_ = new DisplayPanel(view_, chart_, chartToggle, this);
@@ -89,8 +115,9 @@ MainWindow::MainWindow(Document& doc, MainWindowOptions options, QWidget* parent
   tabifyDockWidget(treeDock_, display_);
   treeDock_->raise();
 
-  actions_ = Actions::create(this, {treeDock_->toggleViewAction(), display_->toggleViewAction(),
-                                    planPanel_->toggleViewAction(), log_->toggleViewAction(), chartToggle});
+  actions_ = Actions::create(
+      this, {treeDock_->toggleViewAction(), display_->toggleViewAction(), planPanel_->toggleViewAction(),
+             log_->toggleViewAction(), chartToggle, jointToggle});
   planPanel_->setPlanAction(actions_.plan);
   // The bottom strip (messages, or the chart with its long abscissa) spans the whole width.
   setCorner(Qt::BottomLeftCorner, Qt::BottomDockWidgetArea);
@@ -109,8 +136,13 @@ MainWindow::MainWindow(Document& doc, MainWindowOptions options, QWidget* parent
   unitsLabel_->setToolTip(tr("Lengths are shown and stored in millimetres"));
   statusBar()->addPermanentWidget(meshLabel_);
   statusBar()->addPermanentWidget(unitsLabel_);
+  inspector_ = new PathInspector(selection_, view_, chart_, log_, statusBar(), this);
+  cellWorkspace_ = new CellWorkspace(*this, doc_, *view_, *log_);
+  connect(display_, &DisplayPanel::framesToggled, inspector_, &PathInspector::setFramesVisible);
 
   connectActions();
+  // Placement dock, presets, themes, help, autosave: before the layout is restored, which includes its dock.
+  new ComfortFeatures(*this, options_.persistLayout, options_.interactive);
   if (options_.persistLayout) {
     QSettings settings;
     restoreGeometry(settings.value(kGeometryKey).toByteArray());
@@ -156,6 +188,8 @@ void MainWindow::connectActions()
   connect(a.fitView, &QAction::triggered, view_, &SceneView::fitView);
   connect(a.plan, &QAction::triggered, this, &MainWindow::plan);
   connect(a.cancelPlan, &QAction::triggered, this, &MainWindow::cancelPlan);
+  connect(a.exportProgram, &QAction::triggered, this, &MainWindow::showExportDialog);
+  connect(a.compareStrategies, &QAction::triggered, this, &MainWindow::showCompareView);
   connect(a.about, &QAction::triggered, this, &MainWindow::showAbout);
   connect(a.aboutQt, &QAction::triggered, qApp, &QApplication::aboutQt);
   connect(recent_, &RecentFiles::openRequested, this, [this](const QString& path) {
@@ -324,16 +358,7 @@ void MainWindow::dropEvent(QDropEvent* event)
 
 void MainWindow::showAbout()
 {
-  QMessageBox box(this);
-  box.setWindowTitle(tr("About Spira"));
-  box.setIconPixmap(windowIcon().pixmap(96, 96));
-  box.setText(tr("<h3>Spira %1</h3><p>Continuous spiral path planning for robotic wire-arc additive "
-                 "manufacturing: one uninterrupted deposition path on a thin-walled part.</p>")
-                  .arg(QString::fromUtf8(kVersion)));
-  box.setInformativeText(
-      tr("Built with Qt %1 and VTK %2.")
-          .arg(QString::fromUtf8(qVersion()), QString::fromUtf8(vtkVersion::GetVTKVersion())));
-  box.exec();
+  showAboutDialog(this);
 }
 
 QImage MainWindow::captureImage()

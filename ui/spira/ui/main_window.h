@@ -19,6 +19,12 @@ class DocumentTree;
 class LogPanel;
 class PlanPanel;
 class ProcessChart;
+class ExportDialog;
+class CompareView;
+class PathInspector;
+class JointChart;
+class CellWorkspace;
+class PointSelection;
 class RecentFiles;
 class SceneView;
 class TaskRunner;
@@ -80,6 +86,19 @@ class MainWindow : public QMainWindow {
   QDockWidget* chartDock() const { return chartDock_; }
   TaskRunner* taskRunner() const { return tasks_; }
   RecentFiles* recentFiles() const { return recent_; }
+  // Point selection, 3D marker, chart cursor and torch-frame glyphs (path_inspector.h).
+  PathInspector* pathInspector() const { return inspector_; }
+  // The selected path point, shared by the charts, the 3D view and the status bar.
+  PointSelection* pointSelection() const { return selection_; }
+  JointChart* jointChart() const { return jointChart_; }
+  QDockWidget* jointDock() const { return jointDock_; }
+  CellWorkspace* cellWorkspace() const { return cellWorkspace_; }
+  // File > Export Robot Program (made on first use).
+  ExportDialog* exportDialog();
+  void showExportDialog();
+  // Plan > Compare Strategies (made on first use).
+  CompareView* compareView();
+  void showCompareView();
 
  signals:
   void fileOpened(const QString& path, bool ok);
@@ -128,6 +147,13 @@ class MainWindow : public QMainWindow {
   Actions actions_;
   RecentFiles* recent_ = nullptr;
   TaskRunner* tasks_ = nullptr;
+  PathInspector* inspector_ = nullptr;
+  PointSelection* selection_ = nullptr;
+  JointChart* jointChart_ = nullptr;
+  QDockWidget* jointDock_ = nullptr;
+  CellWorkspace* cellWorkspace_ = nullptr;
+  ExportDialog* exportDialog_ = nullptr;
+  CompareView* compareView_ = nullptr;
   QLabel* meshLabel_ = nullptr;
   QLabel* unitsLabel_ = nullptr;
   // Derived view data, keyed by the mesh it was computed from: the validation report is costly

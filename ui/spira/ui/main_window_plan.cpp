@@ -5,8 +5,10 @@
 
 #include "builtin_plugins.h"
 #include "spira/ui/display_panel.h"
+#include "spira/ui/joint_chart.h"
 #include "spira/ui/log_panel.h"
 #include "spira/ui/main_window.h"
+#include "spira/ui/path_inspector.h"
 #include "spira/ui/plan_job.h"
 #include "spira/ui/plan_panel.h"
 #include "spira/ui/process_chart.h"
@@ -123,6 +125,8 @@ void MainWindow::refreshResults()
   hadSpiral_ = hasSpiral;
   const Trajectory* path = r.process ? r.process.get() : r.spiral.get();
   chart_->setPath(path, r.process != nullptr, planWindow(r));
+  inspector_->setResults(r, placement);
+  jointChart_->setKinematics(r.kinematics);
   display_->resultsChanged();
 }
 

@@ -10,13 +10,17 @@
 #include "spira/base/progress.h"
 #include "spira/document/invalidation.h"
 #include "spira/mesh/mesh_report.h"
+#include "spira/planning/placement_frame.h"
 #include "spira/planning/plan_files.h"
 #include "spira/planning/plan_schemas.h"
 #include "spira/planning/planner.h"
+#include "spira/ui/kinematics_job.h"
 
 namespace spira::ui {
 
 namespace {
+
+constexpr double kPlanShare = 0.8;  // of the job's progress: planPart(); the rest is the kinematics
 
 std::shared_ptr<const nlohmann::json> share(nlohmann::json j)
 {
@@ -47,11 +51,13 @@ std::string summaryLine(const PlanOutput& plan)
 const std::array<PlanStageSpan, kPlanStageCount>& planStageSpans()
 {
   static const std::array<PlanStageSpan, kPlanStageCount> spans{{
-      {"Scalar field", 0.0, 0.30},
-      {"Closure point", 0.30, 0.35},
-      {"Generatrices", 0.35, 0.80},
-      {"Spiral", 0.80, 0.95},
-      {"Process", 0.95, 1.0},
+      // planPart()'s own spans scaled into [0, 0.8] (kPlanShare); the cell's motion takes the rest.
+      {"Scalar field", 0.0, 0.24},
+      {"Closure point", 0.24, 0.28},
+      {"Generatrices", 0.28, 0.64},
+      {"Spiral", 0.64, 0.76},
+      {"Process", 0.76, 0.8},
+      {"Kinematics", 0.8, 1.0},
   }};
   return spans;
 }
@@ -69,20 +75,32 @@ PlanJobResult runPlan(const DocumentState& snapshot, const PluginRegistry& regis
   const auto start = std::chrono::steady_clock::now();
   if (!snapshot.part || !snapshot.part->mesh || snapshot.part->mesh->empty())
     throw InputError("there is no part to plan", "import a part first (File > Import Part...)");
-  const TriangleMesh& mesh = *snapshot.part->mesh;
   const PlanSettings& settings = *snapshot.settings;
   progress.report(0.0, "checking the mesh");
+  // A tilted part is planned in the build frame (world "up") and its results turned back.
+  const PlacementFrame frame(snapshot.part->T_world_part);
+  const TriangleMesh buildMesh = frame.identity() ? TriangleMesh() : frame.toBuild(*snapshot.part->mesh);
+  const TriangleMesh& mesh = frame.identity() ? *snapshot.part->mesh : buildMesh;
   const MeshReport report = validateMesh(mesh);
   progress.checkCancel();
 
   PlanRequest request(mesh, report);
-  // The mesh is in the part frame; the substrate plane is stored in the world frame.
+  // The build frame differs from the world by a translation; the substrate plane is stored in the world.
   request.substrateZ = snapshot.substrate->planeZ - snapshot.part->T_world_part.translation().z();
   request.lowerLoopOverride = snapshot.part->lowerBoundaryOverride;
+  if (!frame.identity() && request.lowerLoopOverride >= 0)
+    request.lowerLoopOverride = PlacementFrame::loopIndexInBuild(
+        validateMesh(*snapshot.part->mesh).boundaryLoops, report.boundaryLoops, request.lowerLoopOverride);
   request.decomposerId = settings.decomposerId;
   request.closureFinderId = settings.closureFinderId;
   request.params = settings.params;
-  PlanOutput plan = planPart(registry, request, progress);
+  SubProgress planProgress(progress, 0.0, kPlanShare, "");
+  PlanOutput plan = planPart(registry, request, planProgress);
+  if (!frame.identity()) {
+    frame.toPart(plan.spiral.trajectory);
+    frame.toPart(plan.generatrices);
+    plan.closure.point = frame.pointToPart(plan.closure.point);
+  }
 
   PlanJobResult out;
   out.feasible = plan.feasible();
@@ -136,6 +154,15 @@ PlanJobResult runPlan(const DocumentState& snapshot, const PluginRegistry& regis
   r.setProcess(std::move(processed));
   r.setReport(Stage::Process, share(std::move(processReport)));
 
+  SubProgress kinematicsProgress(progress, kPlanShare, 1.0, "kinematics");
+  KinematicsJobResult kinematics =
+      runKinematics(snapshot, *r.process, request.substrateZ, kinematicsProgress);
+  out.warnings.insert(out.warnings.end(), kinematics.warnings.begin(), kinematics.warnings.end());
+  if (kinematics.result) {
+    r.setKinematics(std::move(kinematics.result));
+    r.setReport(Stage::Kinematics, std::move(kinematics.report));
+  }
+
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return out;
 }
@@ -146,9 +173,9 @@ std::optional<Stage> storePlanResults(Document& doc, const DocumentState& snapsh
   Results r = computed;
   if (stale) r.invalidateFrom(*stale);
   if (stale && stageIndex(*stale) <= stageIndex(Stage::Field)) return stale;
-  // Later stages of the document (kinematics, export) were computed from the previous plan.
+  // The export stage of the document was computed from the previous plan.
   doc.setResults(std::move(r));
-  if (stale && stageIndex(*stale) > stageIndex(Stage::Process)) return std::nullopt;
+  if (stale && stageIndex(*stale) > stageIndex(Stage::Kinematics)) return std::nullopt;
   return stale;
 }
 

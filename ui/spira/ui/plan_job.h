@@ -20,13 +20,13 @@ struct PlanStageSpan {
   const char* label;
   double begin, end;
 };
-constexpr int kPlanStageCount = 5;
+constexpr int kPlanStageCount = 6;
 const std::array<PlanStageSpan, kPlanStageCount>& planStageSpans();
 // The stage index whose span holds `fraction` (the last one from its begin on).
 int planStageAt(double fraction);
 
 // What a plan computed off the GUI thread hands back: the staged results (field, generatrices,
-// spiral, process, each with its report) and what the user should read about it.
+// spiral, process and, with a cell, kinematics, each with its report) and what the user should read about it.
 struct PlanJobResult {
   Results results;
   std::vector<std::string> warnings;

@@ -238,6 +238,7 @@ void SceneView::showResults(const Results& r, const Transform& T_world_part)
   s.paths->setGeneratrices(r.generatrices.get(), T_world_part, 0.012 * diagonal);
   const Trajectory* path = r.process ? r.process.get() : r.spiral.get();
   s.spiral->setTrajectory(path, r.process != nullptr, planWindow(r), T_world_part);
+  s.spiral->setKinematics(r.kinematics.get());
   applyPartStyle();
   scheduleRender();
 }

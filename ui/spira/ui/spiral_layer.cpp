@@ -22,6 +22,7 @@
 #include <vtkTubeFilter.h>
 
 #include "spira/base/units.h"
+#include "spira/document/kinematics_result.h"
 #include "spira/path/trajectory.h"
 #include "spira/ui/color_maps.h"
 
@@ -46,15 +47,19 @@ SpiralChannelInfo spiralChannelInfo(SpiralChannel c)
 {
   switch (c) {
     case SpiralChannel::Height:
-      return {"height", QObject::tr("Deposit height"), QStringLiteral("mm"), false};
+      return {"height", QObject::tr("Deposit height"), QStringLiteral("mm"), false, false};
     case SpiralChannel::TravelSpeed:
-      return {"travel_speed", QObject::tr("Travel speed"), QStringLiteral("mm/s"), true};
+      return {"travel_speed", QObject::tr("Travel speed"), QStringLiteral("mm/s"), true, false};
     case SpiralChannel::WireFeed:
-      return {"wire_feed", QObject::tr("Wire-feed speed"), QStringLiteral("m/min"), true};
+      return {"wire_feed", QObject::tr("Wire-feed speed"), QStringLiteral("m/min"), true, false};
     case SpiralChannel::Revolution:
-      return {"revolution", QObject::tr("Revolution"), QString(), false};
+      return {"revolution", QObject::tr("Revolution"), QString(), false, false};
+    case SpiralChannel::Dexterity:
+      return {"dexterity", QObject::tr("Dexterity"), QString(), false, true};
+    case SpiralChannel::LimitMargin:
+      return {"limit_margin", QObject::tr("Joint-limit margin"), QStringLiteral("deg"), false, true};
   }
-  return {"height", QObject::tr("Deposit height"), QStringLiteral("mm"), false};
+  return {"height", QObject::tr("Deposit height"), QStringLiteral("mm"), false, false};
 }
 
 SpiralLayer::SpiralLayer(vtkRenderer* renderer)
@@ -85,6 +90,15 @@ SpiralLayer::SpiralLayer(vtkRenderer* renderer)
   vp->SetRenderPointsAsSpheres(true);
   violationActor_->VisibilityOff();
   renderer_->AddActor(violationActor_);
+  vtkNew<vtkPolyDataMapper> flagMapper;
+  flagMapper->SetInputData(kinematicFlagPoints_);
+  flagMapper->ScalarVisibilityOff();
+  kinematicFlagActor_->SetMapper(flagMapper);
+  kinematicFlagActor_->GetProperty()->SetColor(0.95, 0.05, 0.05);
+  kinematicFlagActor_->GetProperty()->SetPointSize(7.0);
+  kinematicFlagActor_->GetProperty()->SetRenderPointsAsSpheres(true);
+  kinematicFlagActor_->VisibilityOff();
+  renderer_->AddActor(kinematicFlagActor_);
 
   vtkTextProperty* t = banner_->GetTextProperty();
   t->SetFontSize(15);
@@ -104,7 +118,8 @@ SpiralLayer::~SpiralLayer() = default;
 
 bool SpiralLayer::channelAvailable(SpiralChannel c) const
 {
-  return hasTrajectory() && (hasSpeeds_ || !spiralChannelInfo(c).needsProcess);
+  const SpiralChannelInfo info = spiralChannelInfo(c);
+  return hasTrajectory() && (hasSpeeds_ || !info.needsProcess) && (hasKinematics_ || !info.needsKinematics);
 }
 
 void SpiralLayer::setTrajectory(const Trajectory* path, bool hasSpeeds, std::optional<PlanWindow> window,
@@ -116,6 +131,8 @@ void SpiralLayer::setTrajectory(const Trajectory* path, bool hasSpeeds, std::opt
   subPath_.clear();
   abscissa_.clear();
   violations_.clear();
+  kinematicFlags_.clear();
+  hasKinematics_ = false;
   pointCount_ = path ? static_cast<long long>(path->size()) : 0;
   const vtkIdType n = pointCount_;
   vtkNew<vtkPoints> points;
@@ -238,6 +255,18 @@ void SpiralLayer::rebuildCells()
     verts->InsertNextCell(1, &id);
   }
   shownViolations_ = bad->GetNumberOfPoints();
+  vtkNew<vtkPoints> flagged;
+  vtkNew<vtkCellArray> flaggedVerts;
+  for (long long i : kinematicFlags_) {
+    if (revolution_[static_cast<size_t>(i)] > limit_) continue;
+    double p[3];
+    path_->GetPoint(i, p);
+    const vtkIdType id = flagged->InsertNextPoint(p);
+    flaggedVerts->InsertNextCell(1, &id);
+  }
+  kinematicFlagPoints_->Initialize();
+  kinematicFlagPoints_->SetPoints(flagged);
+  kinematicFlagPoints_->SetVerts(flaggedVerts);
   violationPoints_->Initialize();
   violationPoints_->SetPoints(bad);
   violationPoints_->SetVerts(verts);
@@ -258,8 +287,9 @@ void SpiralLayer::updateColours()
     // The process window (with its tolerance) is the scale: blue thin, green nominal, red thick;
     // deposits outside it take the violation colour.
     if (window) r[0] = window_->hMin - window_->tolerance, r[1] = window_->hMax + window_->tolerance;
-  } else if (channel_ == SpiralChannel::Revolution) {
-    map = ColorMap::Viridis;
+  } else if (channel_ == SpiralChannel::Revolution || channel_ == SpiralChannel::Dexterity ||
+             channel_ == SpiralChannel::LimitMargin) {
+    map = ColorMap::Viridis;  // dark where the robot is close to a singularity or a limit
   }
   if (!(r[1] > r[0])) {
     // A constant channel (the wire feed in synergic mode) still gets a readable legend.
@@ -288,6 +318,7 @@ void SpiralLayer::updateColours()
                                                                : labelFormatFor(r[0], r[1]));
   QString title = info.unit.isEmpty() ? info.name : QStringLiteral("%1 (%2)").arg(info.name, info.unit);
   if (window) title += QObject::tr("\nmagenta: outside the window");
+  if (hasKinematics_ && !kinematicFlags_.empty()) title += QObject::tr("\nred: unreachable or colliding");
   legend_.setTitle(title);
 }
 
@@ -297,6 +328,7 @@ void SpiralLayer::updateVisibility()
   actor_->SetVisibility(on);
   legend_.setVisible(on);
   violationActor_->SetVisibility(on && shownViolations_ > 0);
+  kinematicFlagActor_->SetVisibility(on && kinematicFlagPoints_->GetNumberOfPoints() > 0);
   banner_->SetVisibility(on && !violations_.empty());
   if (!violations_.empty() && window_) {
     const QString text = QObject::tr("Infeasible plan\n%1 point(s) outside the window %2 to %3 mm")
@@ -305,6 +337,36 @@ void SpiralLayer::updateVisibility()
                              .arg(window_->hMax, 0, 'f', 2);
     banner_->SetInput(text.toUtf8().constData());
   }
+}
+
+}  // namespace spira::ui
+
+namespace spira::ui {
+
+void SpiralLayer::setKinematics(const KinematicsResult* k)
+{
+  kinematicFlags_.clear();
+  hasKinematics_ = k && hasTrajectory() && static_cast<long long>(k->size()) == pointCount_ &&
+                   k->checks.size() == k->size();
+  const vtkIdType n = hasKinematics_ ? pointCount_ : 0;
+  path_->GetPointData()->RemoveArray("dexterity");
+  path_->GetPointData()->RemoveArray("limit_margin");
+  if (hasKinematics_) {
+    auto dexterity = channelArray("dexterity", n), margin = channelArray("limit_margin", n);
+    for (vtkIdType i = 0; i < n; ++i) {
+      const KinematicsCheck& c = k->checks[static_cast<size_t>(i)];
+      dexterity->SetValue(i, c.dexterity);
+      margin->SetValue(i, c.limitMarginDeg);
+      if (!c.reachable || c.collision) kinematicFlags_.push_back(i);
+    }
+    path_->GetPointData()->AddArray(dexterity);
+    path_->GetPointData()->AddArray(margin);
+  }
+  if (!channelAvailable(channel_)) channel_ = SpiralChannel::Height;
+  if (!hasTrajectory()) return;
+  rebuildCells();
+  updateColours();
+  updateVisibility();
 }
 
 }  // namespace spira::ui

@@ -21,20 +21,22 @@ class vtkTextActor;
 class vtkTubeFilter;
 
 namespace spira {
+struct KinematicsResult;
 struct Trajectory;
-}
+}  // namespace spira
 
 namespace spira::ui {
 
 // What the spiral is coloured by.
-enum class SpiralChannel { Height, TravelSpeed, WireFeed, Revolution };
-constexpr int kSpiralChannelCount = 4;
+enum class SpiralChannel { Height, TravelSpeed, WireFeed, Revolution, Dexterity, LimitMargin };
+constexpr int kSpiralChannelCount = 6;
 
 struct SpiralChannelInfo {
-  const char* array;  // point-data array name
-  QString name;       // legend title
-  QString unit;       // shown unit ("" for counts)
-  bool needsProcess;  // only with the process stage's channels
+  const char* array;             // point-data array name
+  QString name;                  // legend title
+  QString unit;                  // shown unit ("" for counts)
+  bool needsProcess;             // only with the process stage's channels
+  bool needsKinematics = false;  // only with the kinematics stage (a cell)
 };
 SpiralChannelInfo spiralChannelInfo(SpiralChannel c);
 
@@ -52,6 +54,12 @@ class SpiralLayer {
   void setTrajectory(const Trajectory* path, bool hasSpeeds, std::optional<PlanWindow> window,
                      const Transform& T_world_part = Transform::Identity());
   bool hasTrajectory() const { return pointCount_ > 0; }
+  // The robot motion solved for the path (null, or a different point count: none). Adds the
+  // dexterity and joint-limit margin channels and marks unreachable or colliding points in red.
+  void setKinematics(const KinematicsResult* kinematics);
+  bool hasKinematics() const { return hasKinematics_; }
+  long long kinematicFlagCount() const { return static_cast<long long>(kinematicFlags_.size()); }
+  vtkActor* kinematicFlagActor() const { return kinematicFlagActor_; }
   bool channelAvailable(SpiralChannel c) const;
   // Returns false (and keeps the channel) when `c` is not available.
   bool setChannel(SpiralChannel c);
@@ -96,6 +104,10 @@ class SpiralLayer {
   vtkNew<vtkPolyData> violationPoints_;
   vtkNew<vtkPolyDataMapper> violationMapper_;
   vtkNew<vtkActor> violationActor_;
+  vtkNew<vtkPolyData> kinematicFlagPoints_;
+  vtkNew<vtkActor> kinematicFlagActor_;
+  std::vector<long long> kinematicFlags_;  // unreachable or colliding point indices
+  bool hasKinematics_ = false;
   ColorLegend legend_;
   vtkNew<vtkTextActor> banner_;
 

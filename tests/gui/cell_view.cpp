@@ -1,0 +1,145 @@
+// The robot cell in the 3D view: a bundled cell chosen from the Cell dock appears around the part
+// with the camera fitted to the whole cell; editing the part's placement in the cell is one undo
+// step and moves the cell around the part; a robot whose mesh is missing still shows, with a
+// stand-in and a warning.
+#include <array>
+#include <regex>
+
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QFileInfo>
+
+#include <gtest/gtest.h>
+#include <vtkRenderer.h>
+
+#include "spira/base/atomic_file.h"
+#include "spira/document/document.h"
+#include "spira/ui/cell_panel.h"
+#include "spira/ui/cell_workspace.h"
+#include "spira/ui/log_panel.h"
+#include "spira/ui/main_window.h"
+#include "spira/ui/robot_layer.h"
+#include "spira/ui/scene_view.h"
+#include "spira/ui/simulation_panel.h"
+#include "support/gui_test_support.h"
+#include "support/test_support.h"
+
+namespace spira::test {
+namespace {
+
+using spira::ui::MainWindow;
+using spira::ui::MainWindowOptions;
+
+bool logContains(MainWindow& w, const QString& text)
+{
+  for (int i = 0; i < w.logPanel()->count(); ++i)
+    if (w.logPanel()->text(i).contains(text)) return true;
+  return false;
+}
+
+// Whether every corner of `b` projects inside the view.
+bool insideView(vtkRenderer* renderer, const std::array<double, 6>& b)
+{
+  for (int i = 0; i < 8; ++i) {
+    renderer->SetWorldPoint(b[i & 1 ? 1 : 0], b[i & 2 ? 3 : 2], b[i & 4 ? 5 : 4], 1.0);
+    renderer->WorldToView();
+    double v[3];
+    renderer->GetViewPoint(v);
+    if (std::abs(v[0]) > 1.0 || std::abs(v[1]) > 1.0) return false;
+  }
+  return true;
+}
+
+TEST(CellView, BundledCellAroundThePart)
+{
+  Document doc;
+  MainWindow w(doc, MainWindowOptions{false, false});
+  showAndWait(w);
+  ASSERT_TRUE(openAndWait(w, qpath(sourceDir() / "resources" / "samples" / "dome.stl")));
+  const QImage partOnly = w.captureImage();
+  ui::CellWorkspace* cells = w.cellWorkspace();
+  ui::RobotLayer& robot = cells->robotLayer();
+  QComboBox* combo = cells->cellPanel()->cellCombo();
+  const QString file = QFileInfo(qpath(sourceDir() / "resources" / "cells" / "fanuc_m20ia_positioner.cell"))
+                           .canonicalFilePath();
+  const int item = combo->findData(file, Qt::UserRole);
+  ASSERT_GE(item, 1);
+  EXPECT_TRUE(combo->itemText(item).startsWith("FANUC ARC Mate 120iC"));
+  combo->setCurrentIndex(item);
+  emit combo->activated(item);  // as a user's choice
+  ASSERT_TRUE(doc.cell());
+  ASSERT_TRUE(robot.hasCell());
+  EXPECT_EQ(combo->currentIndex(), item);
+  EXPECT_FALSE(cells->simulationPanel()->hasMotion());  // nothing solved yet
+  // The camera shows the whole cell and the part.
+  w.sceneView()->render();
+  EXPECT_TRUE(insideView(w.sceneView()->renderer(), robot.bounds()));
+  const std::array<double, 6> b = robot.bounds();
+  EXPECT_GT(b[5] - b[4], 1000.0);  // a robot, not a part: over a metre high
+  const QImage shot = w.captureImage();
+  EXPECT_GT(distinctColours(shot, sceneRect(w)), 400);
+  EXPECT_GT(meanDifference(shot, partOnly, sceneRect(w)), 3.0);
+  saveDocScreenshot(shot, "cell-view.png");
+
+  // Editing the part's height on the table is one undo step; the part stays where the scene
+  // draws it, so the whole cell moves down under it by the same amount.
+  const Transform base = robot.linkTransform(0);
+  const size_t steps = doc.undoStack().count();
+  QDoubleSpinBox* z = cells->cellPanel()->partOffset(2);
+  z->setValue(25.0);
+  emit z->editingFinished();
+  EXPECT_EQ(doc.undoStack().count(), steps + 1);
+  EXPECT_DOUBLE_EQ(doc.cell()->T_mount_part.translation().z(), 25.0);
+  EXPECT_NEAR((robot.linkTransform(0).translation() - base.translation()).z(), -25.0, 1e-9);
+  doc.undo();
+  EXPECT_DOUBLE_EQ(doc.cell()->T_mount_part.translation().z(), 0.0);
+  EXPECT_DOUBLE_EQ(z->value(), 0.0);
+  EXPECT_LT((robot.linkTransform(0).translation() - base.translation()).norm(), 1e-9);
+  // The torch length is a cell edit too.
+  QDoubleSpinBox* tcp = cells->cellPanel()->tcpLength();
+  EXPECT_DOUBLE_EQ(tcp->value(), 350.0);
+  tcp->setValue(400.0);
+  emit tcp->editingFinished();
+  EXPECT_DOUBLE_EQ(doc.cell()->tool.T_flange_tcp.translation().z(), 400.0);
+  doc.undo();
+  EXPECT_DOUBLE_EQ(doc.cell()->tool.T_flange_tcp.translation().z(), 350.0);
+
+  // "No cell" removes it (undoably) and the robot goes.
+  emit combo->activated(0);
+  EXPECT_FALSE(doc.cell());
+  EXPECT_FALSE(robot.hasCell());
+  doc.undo();
+  EXPECT_TRUE(robot.hasCell());
+}
+
+TEST(CellView, MissingMeshShowsAStandInAndAWarning)
+{
+  TempDir dir;
+  const auto robotDir = sourceDir() / "resources" / "robots" / "kuka_kr16_2";
+  std::string urdf = readFile((robotDir / "robot.urdf").string());
+  urdf = std::regex_replace(urdf, std::regex("filename=\"meshes/"),
+                            "filename=\"" + robotDir.string() + "/meshes/");
+  const std::string link3 = robotDir.string() + "/meshes/collision/link_3.stl";
+  const size_t at = urdf.find(link3);
+  ASSERT_NE(at, std::string::npos);
+  urdf.replace(at, link3.size(), (dir.path() / "gone" / "link_3.stl").string());
+  writeBytes(dir.path() / "robot.urdf", urdf);
+  std::string cell = readFile((sourceDir() / "resources" / "cells" / "kuka_kr16_2_table.cell").string());
+  cell = std::regex_replace(cell, std::regex("\\.\\./robots/kuka_kr16_2/robot\\.urdf"), "robot.urdf");
+  writeBytes(dir.path() / "broken.cell", cell);
+
+  Document doc;
+  MainWindow w(doc, MainWindowOptions{false, false});
+  showAndWait(w);
+  ASSERT_TRUE(w.cellWorkspace()->cellPanel()->loadCell(qpath(dir.path() / "broken.cell")));
+  ui::RobotLayer& robot = w.cellWorkspace()->robotLayer();
+  ASSERT_TRUE(robot.hasCell());
+  EXPECT_TRUE(logContains(w, "link_3.stl is missing")) << "no warning about the missing mesh";
+  bool standIn = false;
+  for (size_t l = 0; l < robot.linkCount(); ++l) standIn = standIn || robot.linkName(l) == "link_3";
+  EXPECT_TRUE(standIn) << "link_3 should still show (as a stand-in cube)";
+  EXPECT_GE(robot.linkCount(), 7u);
+}
+
+}  // namespace
+}  // namespace spira::test

@@ -1,0 +1,187 @@
+// Placing the part on the substrate from the Placement dock: move, rotate, drop, choose the base
+// loop; every edit one undo step, the view following, and the plan following the part.
+#include <cmath>
+
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QPushButton>
+#include <QTest>
+
+#include <gtest/gtest.h>
+#include <vtkPolyData.h>
+#include <vtkPolyDataMapper.h>
+
+#include "spira/document/document.h"
+#include "spira/mesh/mesh_primitives.h"
+#include "spira/ui/comfort_features.h"
+#include "spira/ui/main_window.h"
+#include "spira/ui/placement_panel.h"
+#include "spira/ui/scene_view.h"
+#include "spira/ui/spiral_layer.h"
+#include "support/gui_test_support.h"
+#include "support/test_support.h"
+
+namespace spira::test {
+namespace {
+
+using ui::MainWindow;
+using ui::MainWindowOptions;
+using ui::Placement;
+using ui::PlacementPanel;
+
+constexpr double kDeg = M_PI / 180.0;
+
+PlacementPanel* placementOf(MainWindow& w)
+{
+  auto* comfort = w.findChild<ui::ComfortFeatures*>();
+  return comfort ? comfort->placementPanel() : nullptr;
+}
+
+TEST(Placement, EulerAnglesRoundTripAndRotateAboutFixedAxes)
+{
+  for (const Vec3& deg :
+       {Vec3(0, 0, 0), Vec3(30, -45, 120), Vec3(-170, 80, -10), Vec3(90, 0, 0), Vec3(180, 0, 90)}) {
+    Placement p;
+    p.translation = Vec3(1.5, -2.0, 3.25);
+    p.rotationDeg = deg;
+    const Transform T = p.toTransform();
+    const Placement q = Placement::fromTransform(T);
+    EXPECT_TRUE(q.toTransform().isApprox(T, 1e-12)) << deg.transpose();
+    EXPECT_NEAR((q.translation - p.translation).norm(), 0.0, 1e-12);
+  }
+  // X then Y then Z about the world axes: (1, 0, 0) turned 90 deg about Y lands on (0, 0, -1),
+  // then 90 deg about Z leaves it there.
+  Placement p;
+  p.rotationDeg = Vec3(0, 90, 90);
+  EXPECT_NEAR((p.toTransform() * Vec3(1, 0, 0) - Vec3(0, 0, -1)).norm(), 0.0, 1e-12);
+  // (0, 1, 0): about X by 90 to (0, 0, 1), then about Z it stays: order matters.
+  p.rotationDeg = Vec3(90, 0, 90);
+  EXPECT_NEAR((p.toTransform() * Vec3(0, 1, 0) - Vec3(0, 0, 1)).norm(), 0.0, 1e-12);
+}
+
+TEST(Placement, DropPutsTheLowestVertexOnThePlane)
+{
+  TriangleMesh m = makeOpenCylinder(30.0, 60.0, 64, 12);
+  Transform T = Transform::Identity();
+  T.translation() = Vec3(5, 6, 40);
+  T.linear() = Eigen::AngleAxisd(90 * kDeg, Vec3::UnitX()).toRotationMatrix();
+  const Transform D = ui::droppedOnPlane(m, T, 2.5);
+  double lowest = 1e300;
+  for (const Vec3& v : m.vertices) lowest = std::min(lowest, (D * v).z());
+  EXPECT_NEAR(lowest, 2.5, 1e-9);
+  EXPECT_TRUE(D.linear().isApprox(T.linear()));
+  EXPECT_DOUBLE_EQ(D.translation().x(), 5.0);
+  // Lying on its side, the cylinder's axis is 30 mm (its radius) above the plate.
+  EXPECT_NEAR(D.translation().z(), 2.5 + 30.0, 1e-9);
+}
+
+TEST(Placement, PanelMovesRotatesDropsWithUndoAndTheViewFollows)
+{
+  TempDir dir;
+  Document doc;
+  MainWindow w(doc, MainWindowOptions{false, false});
+  showAndWait(w);
+  PlacementPanel* panel = placementOf(w);
+  ASSERT_NE(panel, nullptr);
+  EXPECT_FALSE(panel->dropButton()->isEnabled());  // no part yet
+  ASSERT_TRUE(openAndWait(w, qpath(writeOpenCylinderStl(dir.path()))));
+  EXPECT_TRUE(panel->dropButton()->isEnabled());
+  panel->show();
+  panel->raise();
+  const QImage before = w.captureImage();
+  const size_t steps = doc.undoStack().count();
+
+  panel->field(0)->setValue(80.0);  // X
+  EXPECT_DOUBLE_EQ(doc.part()->T_world_part.translation().x(), 80.0);
+  EXPECT_EQ(doc.undoStack().count(), steps + 1);
+  panel->field(3)->setValue(90.0);  // about X
+  EXPECT_TRUE(doc.part()->T_world_part.linear().isApprox(
+      Eigen::AngleAxisd(90 * kDeg, Vec3::UnitX()).toRotationMatrix(), 1e-12));
+  EXPECT_EQ(doc.undoStack().count(), steps + 2);
+  EXPECT_EQ(QString::fromStdString(doc.undoStack().undoText()), QStringLiteral("Rotate part"));
+  // Two more steps on the same field merge into one undo step (a held arrow key).
+  panel->field(3)->stepUp();
+  panel->field(3)->stepDown();
+  EXPECT_EQ(doc.undoStack().count(), steps + 2);
+
+  // Turned about X, the cylinder (radius 30) reaches 30 mm below its axis: dropping lifts it.
+  ASSERT_TRUE(panel->dropToSubstrate());
+  EXPECT_NEAR(doc.part()->T_world_part.translation().z(), 30.0, 1e-9);
+  EXPECT_NEAR(panel->field(2)->value(), 30.0, 0.005);  // the panel follows the document
+  EXPECT_EQ(QString::fromStdString(doc.undoStack().undoText()), QStringLiteral("Drop part to substrate"));
+
+  const QImage after = w.captureImage();
+  EXPECT_GT(meanDifference(before, after, sceneRect(w)), 2.0) << "the 3D view did not follow the move";
+  saveDocScreenshot(after, QStringLiteral("placement.png"));
+
+  doc.undo();  // drop
+  EXPECT_NEAR(doc.part()->T_world_part.translation().z(), 0.0, 1e-12);
+  EXPECT_NEAR(panel->field(2)->value(), 0.0, 1e-9);
+  doc.undo();  // rotate
+  doc.undo();  // move
+  EXPECT_TRUE(doc.part()->T_world_part.isApprox(Transform::Identity()));
+  EXPECT_DOUBLE_EQ(panel->field(0)->value(), 0.0);
+}
+
+TEST(Placement, LowerBoundaryChoiceListsTheLoopsAndIsOneUndoStep)
+{
+  TempDir dir;
+  Document doc;
+  MainWindow w(doc, MainWindowOptions{false, false});
+  showAndWait(w);
+  ASSERT_TRUE(openAndWait(w, qpath(writeOpenCylinderStl(dir.path()))));
+  PlacementPanel* panel = placementOf(w);
+  QComboBox* combo = panel->lowerBoundaryCombo();
+  // Automatic, then the open cylinder's two rims, lowest first.
+  ASSERT_EQ(combo->count(), 3);
+  EXPECT_TRUE(combo->itemText(1).contains("z 0.0 to 0.0")) << combo->itemText(1).toStdString();
+  EXPECT_TRUE(combo->itemText(2).contains("z 60.0 to 60.0")) << combo->itemText(2).toStdString();
+  EXPECT_EQ(combo->currentIndex(), 0);
+  const size_t steps = doc.undoStack().count();
+  combo->setCurrentIndex(2);
+  emit combo->activated(2);
+  EXPECT_EQ(doc.part()->lowerBoundaryOverride, 1);
+  EXPECT_EQ(doc.undoStack().count(), steps + 1);
+  doc.undo();
+  EXPECT_EQ(doc.part()->lowerBoundaryOverride, Part::kAutomaticLowerBoundary);
+  EXPECT_EQ(combo->currentIndex(), 0);
+}
+
+// The planner works in the part frame: a moved part keeps its spiral (moving only makes later
+// stages stale), the view draws it where the part now is, and planning again gives the same path.
+TEST(Placement, ThePlanFollowsThePlacedPart)
+{
+  TempDir dir;
+  Document doc;
+  MainWindow w(doc, MainWindowOptions{false, false});
+  showAndWait(w);
+  ASSERT_TRUE(openAndWait(w, qpath(writeOpenCylinderStl(dir.path()))));
+  ASSERT_TRUE(planAndWait(w));
+  ASSERT_TRUE(doc.results().spiral) << w.lastErrorMessage().toStdString();
+  const auto planned = doc.results().spiral;
+
+  Transform T = Transform::Identity();
+  T.translation() = Vec3(150.0, -40.0, 0.0);
+  T.linear() = Eigen::AngleAxisd(30 * kDeg, Vec3::UnitZ()).toRotationMatrix();
+  doc.setPartPlacement(T);
+  ASSERT_EQ(doc.results().spiral, planned);  // still valid: the path lives in the part frame
+
+  auto* shown = vtkPolyData::SafeDownCast(w.sceneView()->spiralLayer().mapper()->GetInput());
+  ASSERT_NE(shown, nullptr);
+  ASSERT_EQ(shown->GetNumberOfPoints(), static_cast<vtkIdType>(planned->size()));
+  for (vtkIdType i : {vtkIdType{0}, shown->GetNumberOfPoints() / 2, shown->GetNumberOfPoints() - 1}) {
+    double p[3];
+    shown->GetPoint(i, p);
+    const Vec3 expected = T * planned->points[static_cast<size_t>(i)].position;
+    EXPECT_NEAR((Vec3(p[0], p[1], p[2]) - expected).norm(), 0.0, 1e-9) << "point " << i;
+  }
+
+  ASSERT_TRUE(planAndWait(w));
+  ASSERT_TRUE(doc.results().spiral);
+  ASSERT_EQ(doc.results().spiral->size(), planned->size());
+  for (size_t i = 0; i < planned->size(); i += 97)
+    EXPECT_NEAR((doc.results().spiral->points[i].position - planned->points[i].position).norm(), 0.0, 1e-9);
+}
+
+}  // namespace
+}  // namespace spira::test

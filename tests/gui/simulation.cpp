@@ -1,0 +1,276 @@
+// The robot side of the GUI, as a process engineer goes through it: open the sample dome, choose
+// the bundled FANUC cell with its positioner, plan (the kinematics stage runs in the background
+// plan), colour the spiral by dexterity, then step and play the simulation. Each step checks the
+// model and the view and writes a documentation screenshot.
+#include <cmath>
+#include <iostream>
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDockWidget>
+#include <QElapsedTimer>
+#include <QFileInfo>
+#include <QLabel>
+#include <QSlider>
+
+#include <gtest/gtest.h>
+#include <vtkActor.h>
+#include <vtkCamera.h>
+#include <vtkMatrix4x4.h>
+#include <vtkNew.h>
+#include <vtkPolyDataMapper.h>
+#include <vtkRenderer.h>
+#include <nlohmann/json.hpp>
+
+#include "spira/base/units.h"
+#include "spira/document/document.h"
+#include "spira/ui/bead_layer.h"
+#include "spira/ui/cell_panel.h"
+#include "spira/ui/cell_workspace.h"
+#include "spira/ui/display_panel.h"
+#include "spira/ui/main_window.h"
+#include "spira/ui/robot_layer.h"
+#include "spira/ui/scene_view.h"
+#include "spira/ui/simulation_clock.h"
+#include "spira/ui/simulation_panel.h"
+#include "spira/ui/spiral_layer.h"
+#include "support/gui_test_support.h"
+#include "support/test_support.h"
+
+namespace spira::test {
+namespace {
+
+using spira::ui::MainWindow;
+using spira::ui::MainWindowOptions;
+
+QString fanucCell()
+{
+  return qpath(sourceDir() / "resources" / "cells" / "fanuc_m20ia_positioner.cell");
+}
+
+double maxDifference(const Transform& a, const Transform& b)
+{
+  return (a.matrix() - b.matrix()).cwiseAbs().maxCoeff();
+}
+
+Transform actorMatrix(vtkActor* actor)
+{
+  Transform T = Transform::Identity();
+  vtkMatrix4x4* m = actor->GetUserMatrix();
+  for (int r = 0; r < 4; ++r)
+    for (int c = 0; c < 4; ++c) T.matrix()(r, c) = m ? m->GetElement(r, c) : (r == c ? 1.0 : 0.0);
+  return T;
+}
+
+TEST(Simulation, DomeOnTheFanucPositionerCell)
+{
+  Document doc;
+  MainWindow w(doc, MainWindowOptions{false, false});
+  showAndWait(w);
+  ASSERT_TRUE(openAndWait(w, qpath(sourceDir() / "resources" / "samples" / "dome.stl")));
+  ui::CellWorkspace* cells = w.cellWorkspace();
+  ASSERT_NE(cells, nullptr);
+  ui::RobotLayer& robot = cells->robotLayer();
+  EXPECT_FALSE(robot.hasCell());
+  EXPECT_FALSE(cells->simulationPanel()->hasMotion());
+
+  // 1. The bundled cell is listed by name and set as one undo step.
+  const int listed =
+      cells->cellPanel()->cellCombo()->findData(QFileInfo(fanucCell()).canonicalFilePath(), Qt::UserRole);
+  ASSERT_GE(listed, 1) << "the bundled FANUC cell is not in the Cell combo";
+  const size_t steps = doc.undoStack().count();
+  ASSERT_TRUE(cells->cellPanel()->loadCell(fanucCell()));
+  ASSERT_TRUE(doc.cell());
+  EXPECT_EQ(doc.undoStack().count(), steps + 1);
+  ASSERT_TRUE(robot.hasCell());
+  EXPECT_GE(robot.linkCount(), 7u);  // the foot and link_1..link_6
+  EXPECT_TRUE(cells->cellDock()->isVisible());
+  EXPECT_TRUE(cells->cellPanel()->summary()->text().contains("J5: -140 to 140 deg"));
+  doc.undo();
+  EXPECT_FALSE(robot.hasCell());
+  doc.redo();
+  ASSERT_TRUE(robot.hasCell());
+  const QImage cellShot = w.captureImage();
+  EXPECT_GT(distinctColours(cellShot, sceneRect(w)), 400);
+
+  // 2. Plan: the background job solves the motion on the cell.
+  ASSERT_TRUE(planAndWait(w));
+  const Results& r = doc.results();
+  ASSERT_TRUE(r.process);
+  ASSERT_TRUE(r.kinematics) << w.lastErrorMessage().toStdString();
+  const KinematicsResult& k = *r.kinematics;
+  ASSERT_EQ(k.size(), r.process->size());
+  EXPECT_EQ(k.path.size(), k.size());
+  EXPECT_EQ(k.checks.size(), k.size());
+  ASSERT_EQ(k.axes.size(), 8u);
+  EXPECT_EQ(k.axes[4].name, "J5");
+  EXPECT_EQ(k.axes[6].name, "E1");
+  EXPECT_TRUE(k.joints.hasPositioner);
+  EXPECT_EQ(k.joints.controller, "fanuc_r30ib");
+  EXPECT_EQ(k.report.value("reachable", false),
+            k.allReachable() && k.report.value("within_cable_twist_limit", true));
+  size_t reached = 0;
+  for (const KinematicsCheck& c : k.checks) reached += c.reachable ? 1 : 0;
+  std::cout << "[ measure  ] kinematics of " << k.size() << " points: " << reached << " reachable, "
+            << k.collisionCount() << " colliding, min dexterity " << k.report.value("min_dexterity", 0.0)
+            << ", min limit margin " << k.report.value("min_joint_limit_margin_deg", 0.0) << " deg, "
+            << k.report.value("seconds", 0.0) << " s\n";
+  // The dome sits on the table centre with the build kept vertical: the arm reaches it all.
+  EXPECT_EQ(reached, k.size());
+  ASSERT_TRUE(r.report(Stage::Kinematics));
+
+  // 3. The spiral coloured by the robot's dexterity.
+  ui::SpiralLayer& spiral = w.sceneView()->spiralLayer();
+  EXPECT_TRUE(spiral.hasKinematics());
+  ASSERT_TRUE(w.displayPanel()->setChannel(ui::SpiralChannel::Dexterity));
+  EXPECT_STREQ(spiral.mapper()->GetArrayName(), "dexterity");
+  EXPECT_TRUE(spiral.legend().title().startsWith("Dexterity")) << spiral.legend().title().toStdString();
+  ASSERT_TRUE(w.displayPanel()->setChannel(ui::SpiralChannel::LimitMargin));
+  EXPECT_TRUE(spiral.legend().title().startsWith("Joint-limit margin (deg)"));
+  w.displayPanel()->setChannel(ui::SpiralChannel::Height);
+
+  // 4. Three simulation steps: the links move, to the forward kinematics of the joints there, and
+  // the torch's TCP lands on the path point it was solved for.
+  ui::SimulationPanel* sim = cells->simulationPanel();
+  ASSERT_TRUE(sim->hasMotion());
+  EXPECT_TRUE(cells->simulationDock()->isVisible());
+  sim->setIndex(0);
+  std::vector<Transform> before;
+  for (size_t l = 0; l < robot.linkCount(); ++l) before.push_back(robot.linkTransform(l));
+  const Transform T_world_part = doc.part()->T_world_part;
+  for (int step = 1; step <= 3; ++step) {
+    sim->stepForward();
+    ASSERT_EQ(sim->index(), static_cast<size_t>(step));
+    const JointPoint& j = k.joints.points[static_cast<size_t>(step)];
+    double moved = 0.0;
+    for (size_t l = 0; l < robot.linkCount(); ++l) {
+      const Transform T = robot.linkTransform(l);
+      EXPECT_LT(maxDifference(T, robot.linkTransformAt(l, j.robotDeg, j.externalDeg)), 1e-9) << l;
+      EXPECT_LT(maxDifference(actorMatrix(robot.linkActor(l)), T), 1e-9) << l;
+      moved = std::max(moved, maxDifference(T, before[l]));
+    }
+    EXPECT_GT(moved, 1e-3) << "step " << step;
+    // The positioner carries the part (and everything drawn on it); it holds the build direction
+    // vertical, as the cell asks.
+    const Transform T_scene_part = robot.partMotion() * T_world_part;
+    const TrajectoryPoint& p = k.path.points[static_cast<size_t>(step)];
+    EXPECT_GT((T_scene_part.linear() * p.build).z(), 1.0 - 1e-6) << "step " << step;
+    EXPECT_LT((robot.tcpTransform().translation() - T_scene_part * p.position).norm(), 1e-4)
+        << "step " << step;
+    EXPECT_EQ(cells->beadLayer().shownBeadPoints(), step + 1);
+    EXPECT_TRUE(sim->statusText().startsWith(QStringLiteral("Point %1 of %2").arg(step + 1).arg(k.size())));
+  }
+  sim->stepBackward();
+  EXPECT_EQ(sim->index(), 2u);
+
+  // What playback pays per frame on the GUI thread: the pose (forward kinematics of every link,
+  // actor matrices), the bead up to the point, and the render.
+  QElapsedTimer frameTimer;
+  frameTimer.start();
+  constexpr int kFrames = 30;
+  for (int f = 0; f < kFrames; ++f) sim->setIndex(static_cast<size_t>(f) * (k.size() / kFrames));
+  const double poseMs = static_cast<double>(frameTimer.restart()) / kFrames;
+  for (int f = 0; f < kFrames; ++f) {
+    sim->setIndex(static_cast<size_t>(f) * (k.size() / kFrames));
+    w.sceneView()->render();
+  }
+  const double frameMs = static_cast<double>(frameTimer.elapsed()) / kFrames;
+  std::cout << "[ measure  ] simulation frame on " << k.size() << " points: pose and bead " << poseMs
+            << " ms, with the render " << frameMs << " ms\n";
+
+  // 5. Half-way through the build: the bead grown to the current point.
+  const size_t middle = k.size() / 2;
+  sim->slider()->setValue(static_cast<int>(middle));
+  EXPECT_EQ(sim->index(), middle);
+  EXPECT_EQ(cells->beadLayer().shownBeadPoints(), static_cast<long long>(middle + 1));
+  const Vec3 target = robot.partMotion() * T_world_part * k.path.points[middle].position;
+  EXPECT_LT((robot.tcpTransform().translation() - target).norm(), 1e-4);
+  // Closer, as a user watching the torch would look, with the planned spiral hidden so the bead
+  // deposited so far shows.
+  cells->simulationDock()->raise();
+  w.displayPanel()->spiralCheck()->setChecked(false);
+  vtkCamera* camera = w.sceneView()->renderer()->GetActiveCamera();
+  camera->SetFocalPoint(target.x(), target.y(), target.z());
+  camera->Dolly(2.2);
+  w.sceneView()->renderer()->ResetCameraClippingRange();
+  const QImage simShot = w.captureImage();
+  EXPECT_GT(distinctColours(simShot, sceneRect(w)), 400);
+  EXPECT_GT(meanDifference(simShot, cellShot, sceneRect(w)), 1.0);
+  saveDocScreenshot(simShot, "simulation.png");
+
+  // 6. Playing at 200 x real time moves on by wall-clock time, and pauses.
+  sim->setSpeed(200.0);
+  sim->play();
+  EXPECT_TRUE(sim->playing());
+  waitFor([] { return false; }, 600);
+  sim->pause();
+  EXPECT_FALSE(sim->playing());
+  EXPECT_GT(sim->index(), middle + 10);
+}
+
+// A path of 5 points 10 mm apart at 5 mm/s, then 2 points without a speed (fallback 8 mm/s).
+Trajectory straightPath()
+{
+  Trajectory t;
+  for (int i = 0; i < 7; ++i) {
+    TrajectoryPoint p;
+    p.position = Vec3(10.0 * i, 0.0, 0.0);
+    p.travelSpeed = i < 5 ? 5.0 : 0.0;
+    t.points.push_back(p);
+  }
+  return t;
+}
+
+TEST(Simulation, ClockRunsTheSegmentsAtTheirTravelSpeeds)
+{
+  const ui::SimulationClock clock(straightPath(), 8.0);
+  ASSERT_EQ(clock.size(), 7u);
+  EXPECT_DOUBLE_EQ(clock.time(0), 0.0);
+  EXPECT_DOUBLE_EQ(clock.time(4), 8.0);                // 40 mm at 5 mm/s
+  EXPECT_DOUBLE_EQ(clock.duration(), 8.0 + 2 * 1.25);  // then 20 mm at 8 mm/s
+  EXPECT_EQ(clock.indexAt(-1.0), 0u);
+  EXPECT_EQ(clock.indexAt(1.99), 0u);
+  EXPECT_EQ(clock.indexAt(2.0), 1u);
+  EXPECT_EQ(clock.indexAt(9.3), 5u);
+  EXPECT_EQ(clock.indexAt(1e9), 6u);
+}
+
+TEST(Simulation, BeadGrowsAndCollisionsShowWhereTheyHappen)
+{
+  JointTrajectory joints;
+  joints.points.resize(7);
+  joints.points[3].collision = true;
+  joints.points[5].reachable = false;
+  const KinematicsResult k = makeKinematicsResult(joints, straightPath(), nlohmann::json::object());
+  vtkNew<vtkRenderer> renderer;
+  ui::BeadLayer bead(renderer);
+  const Transform placement(Eigen::Translation3d(0.0, 0.0, 5.0));
+  bead.setMotion(&k, placement, 2.6);
+  EXPECT_EQ(bead.shownBeadPoints(), 1);
+  EXPECT_FALSE(bead.beadActor()->GetVisibility());  // one point: no bead yet
+  bead.showUpTo(2);
+  EXPECT_EQ(bead.shownBeadPoints(), 3);
+  EXPECT_EQ(bead.shownFlagCount(), 0);
+  EXPECT_TRUE(bead.beadActor()->GetVisibility());
+  EXPECT_FALSE(bead.flagActor()->GetVisibility());
+  bead.showUpTo(3);
+  EXPECT_EQ(bead.shownFlagCount(), 1);
+  EXPECT_TRUE(bead.flagActor()->GetVisibility());
+  bead.showUpTo(6);
+  EXPECT_EQ(bead.shownFlagCount(), 2);
+  // The bead tube lies around the placed path: x from 0 to 60 mm, centred on z = 5.
+  bead.beadActor()->GetMapper()->Update();
+  double b[6];
+  bead.beadActor()->GetMapper()->GetBounds(b);
+  EXPECT_NEAR(b[0], 0.0, 1e-9);
+  EXPECT_NEAR(b[1], 60.0, 1e-9);
+  // Ten sides: across any direction the tube spans between 2 r cos(18 deg) and 2 r.
+  EXPECT_NEAR(0.5 * (b[4] + b[5]), 5.0, 1e-6);
+  EXPECT_LE(b[5] - b[4], 5.2 + 1e-9);
+  EXPECT_GE(b[5] - b[4], 5.2 * std::cos(kPi / 10.0) - 1e-9);
+  bead.setMotion(nullptr, placement, 2.6);
+  EXPECT_FALSE(bead.beadActor()->GetVisibility());
+}
+
+}  // namespace
+}  // namespace spira::test

@@ -1,0 +1,66 @@
+#include "spira/ui/kinematics_job.h"
+
+#include <chrono>
+#include <cstdio>
+
+#include <nlohmann/json.hpp>
+
+#include "spira/base/error.h"
+#include "spira/base/progress.h"
+#include "spira/pipeline/plan_motion.h"
+#include "spira/planning/plan_schemas.h"
+#include "spira/robotcell/robot_cell.h"
+
+namespace spira::ui {
+
+KinematicsJobResult runKinematics(const DocumentState& snapshot, const Trajectory& plan, double substrateZ,
+                                  Progress& progress)
+{
+  KinematicsJobResult out;
+  if (!snapshot.cell || plan.empty()) return out;
+  const auto start = std::chrono::steady_clock::now();
+  try {
+    const RobotCell cell(*snapshot.cell);
+    if (!cell.canSolve()) {
+      out.warnings.push_back("Kinematics skipped: " + cell.ikRefusal() +
+                             ". Choose a cell with a 6-axis arm.");
+      return out;
+    }
+    MotionSettings settings;
+    settings.beadWidth =
+        processSettingsFrom(snapshot.settings->section(PlanSettings::kProcessSection)).beadWidth;
+    settings.substrateZ = substrateZ;
+    settings.part = snapshot.part ? snapshot.part->mesh.get() : nullptr;
+    PlanMotion motion = solvePlanMotion(cell, plan, settings, progress);
+    nlohmann::json report = motion.report;
+    report["seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    auto result = std::make_shared<const KinematicsResult>(
+        makeKinematicsResult(std::move(motion.joints), std::move(motion.trajectory), report));
+    const size_t unreachable = report.value("unreachable_points", size_t{0});
+    if (unreachable > 0)
+      out.warnings.push_back("The robot cannot reach " + std::to_string(unreachable) + " of " +
+                             std::to_string(result->size()) +
+                             " points (shown in red). Move the part closer to the robot or change the cell.");
+    if (!report.value("within_cable_twist_limit", true))
+      out.warnings.push_back(
+          "The torch cable twists beyond the cell's limit; enable the spin optimisation or "
+          "change the part's placement.");
+    if (motion.unresolvedCollisions > 0)
+      out.warnings.push_back("The torch collides at " + std::to_string(motion.unresolvedCollisions) +
+                             " point(s) that tilting could not clear (marked in red).");
+    if (motion.robotCollisions > 0)
+      out.warnings.push_back("A robot link hits the part, table or positioner at " +
+                             std::to_string(motion.robotCollisions) + " checked point(s).");
+    for (const auto& w : report.value("cell_warnings", std::vector<std::string>{})) out.warnings.push_back(w);
+    out.report = std::make_shared<const nlohmann::json>(std::move(report));
+    out.result = std::move(result);
+  } catch (const Cancelled&) {
+    throw;
+  } catch (const Error& e) {
+    out.warnings.push_back(std::string("Kinematics failed: ") + e.what() +
+                           (e.hint().empty() ? std::string() : " " + e.hint()));
+  }
+  return out;
+}
+
+}  // namespace spira::ui

@@ -1,0 +1,29 @@
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "spira/document/document_state.h"
+
+namespace spira {
+class Progress;
+}
+
+namespace spira::ui {
+
+// What the kinematics stage of a GUI plan hands back (worker thread: no widget, no Document).
+struct KinematicsJobResult {
+  std::shared_ptr<const KinematicsResult> result;  // null: no cell, or the stage failed
+  std::shared_ptr<const nlohmann::json> report;
+  std::vector<std::string> warnings;  // unreachable points, collisions, missing meshes, failures
+};
+
+// Solves the robot (and positioner) motion of `plan` (part frame, with process channels) on the
+// cell of `snapshot`: torch collisions against the deposit and substrate, IK of every point,
+// robot links against the part. A cell that cannot be read or solved is a warning, not an error:
+// the plan itself stays valid. Cancellation propagates (Cancelled).
+KinematicsJobResult runKinematics(const DocumentState& snapshot, const Trajectory& plan, double substrateZ,
+                                  Progress& progress);
+
+}  // namespace spira::ui

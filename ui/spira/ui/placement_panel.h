@@ -1,0 +1,75 @@
+#pragma once
+
+#include <array>
+#include <memory>
+
+#include <QDockWidget>
+
+#include "spira/base/transform.h"
+#include "spira/document/document.h"
+
+class QComboBox;
+class QDoubleSpinBox;
+class QLabel;
+class QPushButton;
+
+namespace spira {
+struct TriangleMesh;
+}
+
+namespace spira::ui {
+
+// The part's placement as the panel edits it: a translation (mm) and rotations about the fixed
+// world axes X, then Y, then Z (degrees), so R = Rz * Ry * Rx.
+struct Placement {
+  Vec3 translation = Vec3::Zero();
+  Vec3 rotationDeg = Vec3::Zero();
+
+  Transform toTransform() const;
+  // The angles are chosen in (-180, 180], Y in [-90, 90].
+  static Placement fromTransform(const Transform& T);
+};
+
+// `T` moved along world Z so that the lowest vertex of `mesh` (part frame) lands on the plane
+// z = `planeZ`.
+Transform droppedOnPlane(const TriangleMesh& mesh, const Transform& T, double planeZ);
+
+// The "Placement" dock: where the part sits on the substrate. Edits go through the Document
+// (setPartPlacement, setLowerBoundaryOverride), one undo step each; a spin box held down or
+// scrolled merges into one step. The panel follows the document through its notifications.
+class PlacementPanel : public QDockWidget {
+  Q_OBJECT
+
+ public:
+  explicit PlacementPanel(Document& doc, QWidget* parent = nullptr);
+  ~PlacementPanel() override;
+
+  // x, y, z translation (mm) then rotation about x, y, z (deg).
+  QDoubleSpinBox* field(int index) const { return fields_[static_cast<size_t>(index)]; }
+  QPushButton* dropButton() const { return drop_; }
+  QPushButton* resetButton() const { return reset_; }
+  // Item 0 is "Automatic (lowest)", item i + 1 the part's boundary loop i.
+  QComboBox* lowerBoundaryCombo() const { return lower_; }
+
+  // Moves the part down (or up) onto the substrate plane; false when there is no part or the
+  // substrate is not a plane.
+  bool dropToSubstrate();
+
+ private:
+  void onDocumentChanged(const ChangeSet& changes);
+  void refresh();
+  void refreshLoops();
+  void applyFields(int changed);
+
+  Document& doc_;
+  Document::SubscriptionId subscription_ = 0;
+  std::array<QDoubleSpinBox*, 6> fields_{};
+  QPushButton* drop_ = nullptr;
+  QPushButton* reset_ = nullptr;
+  QComboBox* lower_ = nullptr;
+  QLabel* note_ = nullptr;
+  std::shared_ptr<const TriangleMesh> loopsMesh_;
+  bool updating_ = false;
+};
+
+}  // namespace spira::ui
