@@ -80,7 +80,7 @@ Actions Actions::create(QMainWindow* w, const QList<QAction*>& panelToggles)
   a.plan =
       make(w, QObject::tr("&Plan"), QObject::tr("Plan the spiral on the part with the current settings (F5)"),
            {QKeySequence(Qt::Key_F5)});
-  a.plan->setIcon(st->standardIcon(QStyle::SP_MediaPlay));
+  a.plan->setIcon(QIcon(QStringLiteral(":/spira/icons/plan.svg")));
   a.plan->setObjectName(QStringLiteral("planAction"));
   a.cancelPlan = make(w, QObject::tr("&Cancel Planning"),
                       QObject::tr("Stop the running plan; the previous results stay (Esc)"),

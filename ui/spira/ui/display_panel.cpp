@@ -120,6 +120,8 @@ DisplayPanel::DisplayPanel(SceneView* view, ProcessChart* chart, QAction* chartT
   revolutionText_ = new QLabel(spiralBox_);
   revolutionText_->setObjectName(QStringLiteral("revolutionLabel"));
   revolutionText_->setWordWrap(true);
+  // Up to three wrapped lines; a short dock must not clip them.
+  revolutionText_->setMinimumHeight(3 * revolutionText_->fontMetrics().lineSpacing() + 4);
   spiralForm->addRow(QString(), revolutionText_);
   layout->addWidget(spiralBox_);
 

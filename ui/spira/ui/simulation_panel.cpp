@@ -56,6 +56,8 @@ SimulationPanel::SimulationPanel(RobotLayer& robot, BeadLayer& bead, std::functi
   layout->addWidget(slider_);
   status_ = new QLabel(this);
   status_->setWordWrap(true);
+  // Two lines (position, then dexterity and margin): a short dock must not clip them.
+  status_->setMinimumHeight(2 * status_->fontMetrics().lineSpacing() + 4);
   layout->addWidget(status_);
   layout->addStretch(1);
 
