@@ -7,10 +7,8 @@
 
 #include "spira/base/atomic_file.h"
 #include "spira/base/error.h"
-#include "spira/base/progress.h"
 #include "spira/base/units.h"
-#include "spira/io/stl_reader.h"
-#include "spira/mesh/mesh_weld.h"
+#include "spira/robotcell/mesh_file.h"
 
 namespace spira {
 namespace {
@@ -72,9 +70,10 @@ Transform poseOf(const urdf::Pose& p)
   return transformFromXyzRpy(Vec3(p.position.x, p.position.y, p.position.z) * kMetre, Vec3(roll, pitch, yaw));
 }
 
-// The geometry of one <collision> element in its link's frame, or nothing (with a warning).
-bool geometryMesh(const urdf::Geometry& g, const std::filesystem::path& dir, TriangleMesh& out,
-                  std::vector<std::string>& warnings)
+// The geometry of one <collision> or <visual> element in its link's frame, or nothing (with a
+// warning naming `role` and the file).
+bool geometryMesh(const urdf::Geometry& g, const std::filesystem::path& dir, const char* role,
+                  const char* fallback, TriangleMesh& out, std::vector<std::string>& warnings)
 {
   switch (g.type) {
     case urdf::Geometry::BOX: {
@@ -95,23 +94,31 @@ bool geometryMesh(const urdf::Geometry& g, const std::filesystem::path& dir, Tri
     case urdf::Geometry::MESH: {
       const auto& m = static_cast<const urdf::Mesh&>(g);
       const std::filesystem::path file = dir / m.filename;
-      std::string ext = file.extension().string();
-      for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-      if (!std::filesystem::exists(file) || ext != ".stl") {
-        warnings.push_back("collision mesh " + file.string() +
-                           (std::filesystem::exists(file) ? " is not STL" : " is missing") +
-                           ": a 100 mm cube stands in for it");
+      try {
+        out = readLinkMesh(file, Vec3(m.scale.x, m.scale.y, m.scale.z));
+        return true;
+      } catch (const Error& e) {
+        warnings.push_back(std::string(role) + " geometry: " + e.what() + "; " + fallback);
         return false;
       }
-      NullProgress progress;
-      const StlData stl = readStl(file, progress);
-      out = weldTriangleSoup(stl.soup.vertices);
-      const Vec3 scale = Vec3(m.scale.x, m.scale.y, m.scale.z) * kMetre;
-      for (Vec3& v : out.vertices) v = v.cwiseProduct(scale);
-      return true;
     }
   }
   return false;
+}
+
+// The link's <visual> geometry with origins applied, or false (with a warning) when any piece of it
+// cannot be read: a half-drawn link would mislead more than its collision shape does.
+bool visualMesh(const urdf::Link& link, const std::filesystem::path& dir, TriangleMesh& out,
+                std::vector<std::string>& warnings)
+{
+  for (const auto& v : link.visual_array) {
+    if (!v || !v->geometry) continue;
+    TriangleMesh piece;
+    if (!geometryMesh(*v->geometry, dir, "visual", "its collision shape is shown instead", piece, warnings))
+      return false;
+    append(out, piece, poseOf(v->origin));
+  }
+  return !out.faces.empty();
 }
 
 }  // namespace
@@ -145,13 +152,16 @@ RobotShapes readRobotShapes(const std::string& urdfPath, const std::string& base
     for (const auto& c : link->collision_array) {
       if (!c || !c->geometry) continue;
       TriangleMesh piece;
-      if (!geometryMesh(*c->geometry, dir, piece, shapes.warnings)) {
+      if (!geometryMesh(*c->geometry, dir, "collision", "a 100 mm cube stands in for it", piece,
+                        shapes.warnings)) {
         piece = boxMesh(Vec3::Constant(100.0));
         s.standInCube = true;
       }
       append(s.mesh, piece, poseOf(c->origin));
     }
     if (s.mesh.faces.empty()) continue;
+    s.displayIsVisual = visualMesh(*link, dir, s.display, shapes.warnings);
+    if (!s.displayIsVisual) s.display = s.mesh;
     s.chain = std::move(chain);
     s.bvh = std::make_unique<TriangleBvh>(s.mesh);
     shapes.links.push_back(std::move(s));

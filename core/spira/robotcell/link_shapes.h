@@ -20,6 +20,10 @@ struct LinkShape {
   TriangleMesh mesh;  // in the link frame
   std::unique_ptr<TriangleBvh> bvh;
   bool standInCube = false;  // its mesh file was missing: a 100 mm cube stands in
+  // What the link looks like (URDF <visual>, origins applied), in the link frame; when the visual
+  // geometry is absent or unreadable, a copy of `mesh` (then displayIsVisual is false).
+  TriangleMesh display;
+  bool displayIsVisual = false;
 };
 
 struct RobotShapes {
@@ -27,10 +31,12 @@ struct RobotShapes {
   std::vector<std::string> warnings;  // missing or unreadable meshes, by file
 };
 
-// Reads the collision geometry of every link of the URDF from `baseLink` along the chain to
-// `tipLink` (and the links fixed to them). Mesh paths are relative to the URDF's folder; STL meshes
-// are read (other formats and missing files get a 100 mm stand-in cube and a warning, never an error:
-// the cell still displays and plans). Throws InputError when the URDF does not parse.
+// Reads the collision and visual geometry of every link of the URDF from `baseLink` along the chain
+// to `tipLink` (and the links fixed to them). Mesh paths are relative to the URDF's folder; meshes
+// are read by readLinkMesh (STL, COLLADA, OBJ, ...). A missing or unreadable collision mesh gets a
+// 100 mm stand-in cube and a warning, an unreadable visual mesh falls back to the collision geometry
+// with a warning, never an error: the cell still displays and plans. Throws InputError when the
+// URDF does not parse.
 RobotShapes readRobotShapes(const std::string& urdfPath, const std::string& baseLink,
                             const std::string& tipLink);
 

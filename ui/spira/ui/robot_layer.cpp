@@ -141,7 +141,9 @@ std::vector<std::string> RobotLayer::setCell(const CellRecord* record)
   const double* armColour = record->controller == ControllerFamily::FanucR30iB ? fanuc : kuka;
   for (size_t k = 0; k < robotShapes_->links.size(); ++k) {
     const LinkShape& s = robotShapes_->links[k];
-    links_.push_back({s.link, meshActor(s.mesh, s.standInCube ? standIn : armColour), k});
+    // The visual mesh when it read; otherwise the collision shape, in magenta if that is a stand-in.
+    const bool standInShown = !s.displayIsVisual && s.standInCube;
+    links_.push_back({s.link, meshActor(s.display, standInShown ? standIn : armColour), k});
     if (s.joints == 0) links_.back().actor->GetProperty()->SetColor(0.25, 0.26, 0.28);  // the fixed foot
   }
   if (record->hasPositioner()) {
@@ -151,7 +153,7 @@ std::vector<std::string> RobotLayer::setCell(const CellRecord* record)
     const double grey[3] = {0.45, 0.46, 0.5}, steel[3] = {0.72, 0.73, 0.76};
     for (size_t k = 0; k < positionerShapes_->links.size(); ++k) {
       const LinkShape& s = positionerShapes_->links[k];
-      positionerLinks_.push_back({s.link, meshActor(s.mesh, s.joints == 0 ? grey : steel), k});
+      positionerLinks_.push_back({s.link, meshActor(s.display, s.joints == 0 ? grey : steel), k});
     }
   }
   for (const Piece& p : links_) renderer_->AddActor(p.actor);
