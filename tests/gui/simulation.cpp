@@ -29,6 +29,7 @@
 #include "spira/ui/cell_workspace.h"
 #include "spira/ui/display_panel.h"
 #include "spira/ui/main_window.h"
+#include "spira/ui/point_selection.h"
 #include "spira/ui/robot_layer.h"
 #include "spira/ui/scene_view.h"
 #include "spira/ui/simulation_clock.h"
@@ -197,6 +198,16 @@ TEST(Simulation, DomeOnTheFanucPositionerCell)
   EXPECT_GT(distinctColours(simShot, sceneRect(w)), 400);
   EXPECT_GT(meanDifference(simShot, cellShot, sceneRect(w)), 1.0);
   saveDocScreenshot(simShot, "simulation.png");
+
+  // A point selected elsewhere (a chart, the 3D view) poses the robot there too.
+  const size_t picked = k.size() / 3;
+  w.pointSelection()->select(static_cast<long long>(picked));
+  EXPECT_EQ(sim->index(), picked);
+  EXPECT_LT((robot.tcpTransform().translation() -
+             robot.partMotion() * T_world_part * k.path.points[picked].position)
+                .norm(),
+            1e-4);
+  sim->setIndex(middle);
 
   // 6. Playing at 200 x real time moves on by wall-clock time, and pauses.
   sim->setSpeed(200.0);

@@ -32,6 +32,7 @@
 #include "spira/ui/process_chart.h"
 #include "spira/ui/recent_files.h"
 #include "spira/ui/scene_view.h"
+#include "spira/ui/simulation_panel.h"
 #include "spira/ui/stage_progress.h"
 #include "spira/ui/task_runner.h"
 
@@ -138,6 +139,11 @@ MainWindow::MainWindow(Document& doc, MainWindowOptions options, QWidget* parent
   statusBar()->addPermanentWidget(unitsLabel_);
   inspector_ = new PathInspector(selection_, view_, chart_, log_, statusBar(), this);
   cellWorkspace_ = new CellWorkspace(*this, doc_, *view_, *log_);
+  // A point picked on a chart or in 3D also poses the robot there, once the plan's motion is solved.
+  connect(selection_, &PointSelection::changed, this, [this](long long i) {
+    SimulationPanel* sim = cellWorkspace_->simulationPanel();
+    if (i >= 0 && sim->hasMotion() && !sim->playing()) sim->setIndex(static_cast<size_t>(i));
+  });
   connect(display_, &DisplayPanel::framesToggled, inspector_, &PathInspector::setFramesVisible);
 
   connectActions();
