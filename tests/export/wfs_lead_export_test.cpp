@@ -6,7 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
-#include <regex>
+#include <cstdio>
 
 #include "builtin_plugins.h"
 #include "export_test_data.h"
@@ -83,17 +83,20 @@ ReadBack readKrl(const std::filesystem::path& dir)
   const test::KrlRun run = test::runKrl(dir, "spira_part");
   for (const auto& p : run.problems) ADD_FAILURE() << p;
   ReadBack r;
-  const std::regex trigger("TRIGGER WHEN DISTANCE=([01]) DELAY=(-?[0-9]+) DO \\$ANOUT\\[1\\]=(-?[0-9.]+)");
   double t = 0.0;
   for (const test::KrlMove& m : run.moves) {
     if (m.target.rfind("XP", 0) != 0) continue;
     const double start = t;
     if (!r.targets.empty()) t += (m.pose.xyz - r.targets.back()).norm() / (1000.0 * m.velCp);
     for (const auto& text : m.triggers) {
-      std::smatch s;
-      if (!std::regex_search(text, s, trigger)) continue;
-      const double delay = std::stod(s[2].str()) / 1000.0;
-      r.setpoints.push_back({(s[1].str() == "0" ? start : t) + delay, std::stod(s[3].str()) / 0.1});
+      const size_t at = text.find("TRIGGER WHEN DISTANCE=");
+      int distance = 0, delayMs = 0;
+      double volts = 0.0;
+      if (at == std::string::npos ||
+          std::sscanf(text.c_str() + at, "TRIGGER WHEN DISTANCE=%d DELAY=%d DO $ANOUT[1]=%lf", &distance,
+                      &delayMs, &volts) != 3)
+        continue;
+      r.setpoints.push_back({(distance == 0 ? start : t) + delayMs / 1000.0, volts / 0.1});
     }
     r.targets.push_back(m.pose.xyz);
     r.times.push_back(t);
@@ -106,17 +109,19 @@ ReadBack readTp(const std::filesystem::path& dir)
   const test::TpRun run = test::runTp(dir, "SPIRA_PART");
   for (const auto& p : run.problems) ADD_FAILURE() << p;
   ReadBack r;
-  const std::regex logic("T([AB]) ([0-9.]+)sec,AO\\[1\\]=(-?[0-9]+)");
   double t = 0.0;
   bool started = false;
   for (size_t i = 1; i < run.moves.size(); ++i) {  // moves[0] is the joint move to the approach
     const test::TpMove& m = run.moves[i];
     const Vec3 xyz = test::tpPose(m.pos).translation();
     if (started) t += (xyz - r.targets.back()).norm() / std::stod(m.speed);
-    std::smatch s;
-    if (std::regex_search(m.options, s, logic)) {
-      const double offset = std::stod(s[2].str());
-      r.setpoints.push_back({s[1].str() == "A" ? t + offset : t - offset, std::stod(s[3].str()) / 100.0});
+    for (const char* tag : {"TA ", "TB "}) {
+      const size_t at = m.options.find(tag);
+      double offset = 0.0;
+      int value = 0;
+      if (at != std::string::npos &&
+          std::sscanf(m.options.c_str() + at + 3, "%lfsec,AO[1]=%d", &offset, &value) == 2)
+        r.setpoints.push_back({tag[1] == 'A' ? t + offset : t - offset, value / 100.0});
     }
     if (m.speed.find("mm/sec") == std::string::npos) ADD_FAILURE() << m.speed;
     if (i == 1) started = true;  // the approach ends on the first path point: time 0
