@@ -51,7 +51,10 @@ void printSummary(const PlanOutput& plan, std::ostream& out)
       << " modulated, " << s.nEndRevolutions << " closing), " << s.nPoints << " points, path " << s.pathLength
       << " mm\n";
   out << "deposit height " << s.heightMin << " .. " << s.heightMax << " mm (mean " << s.heightMean
-      << " mm)\n";
+      << " mm) in the modulated layers";
+  if (s.rampHeightMax > 0.0)
+    out << "; " << s.rampHeightMin << " .. " << s.rampHeightMax << " mm in the start-up and closing ramps";
+  out << "\n";
   if (plan.hasClosure)
     out << "closure point (" << plan.closure.point.x() << ", " << plan.closure.point.y() << ", "
         << plan.closure.point.z() << ") mm\n";

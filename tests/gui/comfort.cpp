@@ -4,6 +4,7 @@
 #include <chrono>
 #include <iostream>
 #include <thread>
+#include <vector>
 
 #include <QAction>
 #include <QActionGroup>
@@ -19,6 +20,10 @@
 #include <QTimer>
 
 #include <gtest/gtest.h>
+#include <vtkCallbackCommand.h>
+#include <vtkCommand.h>
+#include <vtkNew.h>
+#include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
 
 #include "spira/base/error.h"
@@ -28,11 +33,13 @@
 #include "spira/ui/display_panel.h"
 #include "spira/ui/guided_tour.h"
 #include "spira/ui/help_dialogs.h"
+#include "spira/ui/interactive_quality.h"
 #include "spira/ui/main_window.h"
 #include "spira/ui/plan_panel.h"
 #include "spira/ui/preset_bar.h"
 #include "spira/ui/presets.h"
 #include "spira/ui/scene_view.h"
+#include "spira/ui/task_runner.h"
 #include "spira/ui/theme.h"
 #include "spira/ui/ui_watchdog.h"
 #include "support/gui_test_support.h"
@@ -285,6 +292,58 @@ TEST(HelpMenu, AboutShortcutsAndTheGuidedSample)
   QTest::qWait(300);
   EXPECT_EQ(exported, tour->isDone(ui::GuidedTour::Export));
   tour->close();
+}
+
+// While a job runs the 3D view draws fast frames (no multisampling, thin lines); screenshots are
+// still drawn at full quality, and full quality returns once the job is over and the view still.
+TEST(InteractiveQuality, FastWhileAJobRunsFullQualityAfterwardsAndInPictures)
+{
+  Document doc;
+  MainWindow w(doc, MainWindowOptions{false, false});
+  showAndWait(w);
+  auto* quality = w.sceneView()->findChild<ui::InteractiveQuality*>();
+  ASSERT_NE(quality, nullptr);
+  vtkRenderWindow* rw = w.sceneView()->renderer()->GetRenderWindow();
+  const int samples = rw->GetMultiSamples();
+  ASSERT_GT(samples, 0);
+  ASSERT_TRUE(openAndWait(w, domeFile()));
+  ASSERT_TRUE(waitFor([&] { return !quality->fast(); }, 3000));
+  EXPECT_EQ(rw->GetMultiSamples(), samples);
+
+  // The multisampling of every frame drawn while the plan runs.
+  std::vector<int> frames;
+  vtkNew<vtkCallbackCommand> onRender;
+  onRender->SetClientData(&frames);
+  onRender->SetCallback([](vtkObject* caller, unsigned long, void* data, void*) {
+    static_cast<std::vector<int>*>(data)->push_back(static_cast<vtkRenderWindow*>(caller)->GetMultiSamples());
+  });
+  bool heldWhileRunning = false, captured = false;
+  size_t captureFrame = 0;
+  QTimer probe;
+  QObject::connect(&probe, &QTimer::timeout, &w, [&] {
+    if (!quality->held() || captured) return;
+    heldWhileRunning = true;
+    w.sceneView()->scheduleRender();  // a frame while the job runs: fast
+    QTest::qWait(20);
+    captureFrame = frames.size();
+    w.captureImage();  // a picture: full quality, then fast again
+    captured = true;
+    EXPECT_TRUE(quality->held());
+    EXPECT_TRUE(quality->fast());
+  });
+  const unsigned long tag = rw->AddObserver(vtkCommand::StartEvent, onRender);
+  probe.start(5);
+  const bool planned = planAndWait(w);
+  probe.stop();
+  rw->RemoveObserver(tag);
+  ASSERT_TRUE(planned);
+  ASSERT_TRUE(heldWhileRunning);
+  ASSERT_TRUE(captured);
+  ASSERT_GT(frames.size(), captureFrame);
+  for (size_t i = 0; i < frames.size(); ++i) EXPECT_EQ(frames[i], i == captureFrame ? samples : 0) << "frame " << i;
+  EXPECT_FALSE(quality->held());
+  ASSERT_TRUE(waitFor([&] { return !quality->fast(); }, 3000));
+  EXPECT_EQ(rw->GetMultiSamples(), samples);
 }
 
 TEST(UiWatchdog, SeesABlockedGuiThread)

@@ -1,7 +1,11 @@
 // The worker-thread runner behind imports: progress reaches the dialog, Cancel stops the job,
 // errors come back with their hint, and the GUI thread stays responsive meanwhile.
+#include <atomic>
 #include <chrono>
 #include <thread>
+
+// Before Qt: its `emit` macro breaks TBB's profiling header.
+#include <tbb/parallel_for.h>
 
 #include <QApplication>
 #include <QProgressDialog>
@@ -13,6 +17,7 @@
 
 #include "spira/base/error.h"
 #include "spira/base/progress.h"
+#include "spira/ui/background_priority.h"
 #include "spira/ui/task_runner.h"
 
 namespace spira::test {
@@ -33,6 +38,42 @@ TaskOutcome runAndWait(TaskRunner& runner, TaskRunner::Job job)
   EXPECT_TRUE(called);
   EXPECT_FALSE(runner.busy());
   return result;
+}
+
+// Jobs run below the GUI thread's priority, their TBB workers too, so a plan using every core
+// leaves the event loop its share; the GUI thread itself keeps its own priority.
+TEST(TaskRunner, JobsAndTheirParallelWorkersYieldToTheGuiThread)
+{
+  QWidget parent;
+  TaskRunner runner(&parent);
+  const int guiNice = ui::BackgroundPriority::currentNice();
+  std::atomic<int> jobNice{-100}, lowestWorkerNice{100};
+  std::atomic<int> otherThreads{0};
+  TaskOutcome o = runAndWait(runner, [&](Progress&) {
+    jobNice = ui::BackgroundPriority::currentNice();
+    const std::thread::id self = std::this_thread::get_id();
+    // Enough slow iterations that the workers join in.
+    tbb::parallel_for(0, 64, [&](int) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(2));
+      if (std::this_thread::get_id() == self) return;
+      ++otherThreads;
+      int seen = lowestWorkerNice.load();
+      const int nice = ui::BackgroundPriority::currentNice();
+      while (nice < seen && !lowestWorkerNice.compare_exchange_weak(seen, nice)) {
+      }
+    });
+  });
+  ASSERT_TRUE(o.succeeded());
+  EXPECT_GE(jobNice.load(), ui::BackgroundPriority::kNice);
+  // TBB has workers wherever there is more than one core.
+  if (std::thread::hardware_concurrency() > 1) {
+    EXPECT_GT(otherThreads.load(), 0);
+  }
+  if (otherThreads > 0) {
+    EXPECT_GE(lowestWorkerNice.load(), ui::BackgroundPriority::kNice);
+  }
+  EXPECT_EQ(ui::BackgroundPriority::currentNice(), guiNice);
+  EXPECT_LT(guiNice, ui::BackgroundPriority::kNice);
 }
 
 TEST(TaskRunner, ReturnsErrorsWithTheirHint)

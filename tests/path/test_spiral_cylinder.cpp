@@ -3,6 +3,7 @@
 // and of the ramp rule, not from the library.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -143,6 +144,20 @@ TEST(SpiralCylinder, StartUpRevolutionsFollowTable31)
       EXPECT_NEAR(last.position.z() - below, 1.1, 1e-9);
     }
   }
+  // The ramps span the window (Table 3.1: 0.9 at a revolution's start, 1.1 at its end) and the
+  // report says so, apart from the modulated rows' own range.
+  double lo = 1e9, hi = -1e9;
+  for (const TrajectoryPoint& p : r.trajectory.points)
+    if (p.revolution < 6 || p.revolution >= r.report.nRevolutions - 6) {
+      lo = std::min(lo, p.height);
+      hi = std::max(hi, p.height);
+    }
+  EXPECT_DOUBLE_EQ(r.report.rampHeightMin, lo);
+  EXPECT_DOUBLE_EQ(r.report.rampHeightMax, hi);
+  EXPECT_NEAR(lo, 0.9, 0.005);
+  EXPECT_NEAR(hi, 1.1, 0.005);
+  EXPECT_LT(r.report.rampHeightMin, r.report.heightMin);
+  EXPECT_GT(r.report.rampHeightMax, r.report.heightMax);
 }
 
 TEST(SpiralCylinder, ModulatedDepositIsUniformAndReachesTheTop)

@@ -35,7 +35,8 @@ void checkFeasibility(const Trajectory& path, double h, double hMin, double hMax
   report.violations.clear();
   report.modulatedViolations = 0;
   double lo = std::numeric_limits<double>::infinity(), hi = -lo, sum = 0.0;
-  size_t modulated = 0;
+  double rampLo = lo, rampHi = hi;
+  size_t modulated = 0, ramp = 0;
   const size_t count = path.points.size();
   for (size_t q = 0; q < count; ++q) {
     const TrajectoryPoint& p = path.points[q];
@@ -46,6 +47,10 @@ void checkFeasibility(const Trajectory& path, double h, double hMin, double hMax
       hi = std::max(hi, p.height);
       sum += p.height;
       ++modulated;
+    } else if (phase != SpiralPhase::Closure) {
+      rampLo = std::min(rampLo, p.height);
+      rampHi = std::max(rampHi, p.height);
+      ++ramp;
     }
     const bool below = p.height < hMin - tol;
     const bool above = p.height > hMax + tol;
@@ -56,6 +61,8 @@ void checkFeasibility(const Trajectory& path, double h, double hMin, double hMax
   report.heightMin = modulated ? lo : 0.0;
   report.heightMax = modulated ? hi : 0.0;
   report.heightMean = modulated ? sum / modulated : 0.0;
+  report.rampHeightMin = ramp ? rampLo : 0.0;
+  report.rampHeightMax = ramp ? rampHi : 0.0;
   report.feasible = report.lengthCriterion.ok && report.violations.empty();
 }
 

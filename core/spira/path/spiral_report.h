@@ -48,6 +48,9 @@ struct SpiralReport {
 
   // True deposit heights h = d cos(theta) over the modulated phase (the thesis's H_depot), mm.
   double heightMin = 0.0, heightMax = 0.0, heightMean = 0.0;
+  // The same over the start-up and termination ramps, which use the whole window to climb from the
+  // substrate and level the top (0 when the spiral has no ramp point).
+  double rampHeightMin = 0.0, rampHeightMax = 0.0;
   double pathLength = 0.0;  // mm
   double maxJump = 0.0;     // longest segment between consecutive points, mm
   // Largest rise along b over a seam segment (last point of a revolution to the first of the next),

@@ -66,6 +66,12 @@ void addSpiralReport(SpiralReport& total, const SpiralReport& part, size_t offse
     total.seamStep = std::max(total.seamStep, part.seamStep);
     total.heightMin = std::min(total.heightMin, part.heightMin);
     total.heightMax = std::max(total.heightMax, part.heightMax);
+    if (part.rampHeightMax > 0.0) {
+      const bool noRampYet = total.rampHeightMax <= 0.0;
+      total.rampHeightMin =
+          noRampYet ? part.rampHeightMin : std::min(total.rampHeightMin, part.rampHeightMin);
+      total.rampHeightMax = std::max(total.rampHeightMax, part.rampHeightMax);
+    }
     const double n = static_cast<double>(part.nPoints);
     if (pointsBefore + n > 0)
       total.heightMean = (total.heightMean * pointsBefore + part.heightMean * n) / (pointsBefore + n);

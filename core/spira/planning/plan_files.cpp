@@ -124,6 +124,8 @@ nlohmann::json planReportJson(const PlanOutput& plan, const std::string& strateg
   j["height_min"] = s.heightMin;
   j["height_max"] = s.heightMax;
   j["height_mean"] = s.heightMean;
+  j["ramp_height_min"] = s.rampHeightMin;
+  j["ramp_height_max"] = s.rampHeightMax;
   j["feasible"] = plan.feasible();
   j["window_feasible"] = s.feasible;
   j["length_criterion"] = {

@@ -27,6 +27,7 @@
 #include "spira/ui/plan_panel.h"
 #include "spira/ui/preset_bar.h"
 #include "spira/ui/scene_view.h"
+#include "spira/ui/task_runner.h"
 #include "spira/ui/theme.h"
 
 namespace spira::ui {
@@ -56,6 +57,8 @@ ComfortFeatures::ComfortFeatures(MainWindow& window, bool userSession, bool inte
           &InteractiveQuality::fastFrame);
   connect(window.displayPanel()->revolutionSlider(), &QSlider::valueChanged, quality,
           &InteractiveQuality::fastFrame);
+  connect(window.taskRunner(), &TaskRunner::started, quality, &InteractiveQuality::hold);
+  connect(window.taskRunner(), &TaskRunner::finished, quality, &InteractiveQuality::release);
   placement_ = new PlacementPanel(doc, &window);
   window.addDockWidget(Qt::LeftDockWidgetArea, placement_);
   window.tabifyDockWidget(window.displayPanel(), placement_);

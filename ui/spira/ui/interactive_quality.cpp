@@ -78,7 +78,7 @@ void InteractiveQuality::interactionStarted()
 void InteractiveQuality::interactionEnded()
 {
   // A wheel step is a whole interaction: wait until the camera stays still.
-  if (fast_) settle_->start();
+  if (fast_ && !held_) settle_->start();
 }
 
 void InteractiveQuality::fastFrame()
@@ -88,7 +88,33 @@ void InteractiveQuality::fastFrame()
   view_->scheduleRender();
 }
 
+void InteractiveQuality::hold()
+{
+  held_ = true;
+  interactionStarted();
+}
+
+void InteractiveQuality::release()
+{
+  if (!held_) return;
+  held_ = false;
+  interactionEnded();
+}
+
 void InteractiveQuality::restore()
+{
+  if (!fast_ || held_) return;
+  applyFullQuality();
+  view_->scheduleRender();
+}
+
+void InteractiveQuality::fullQualityNow()
+{
+  settle_->stop();
+  applyFullQuality();
+}
+
+void InteractiveQuality::applyFullQuality()
 {
   vtkRenderWindow* w = window_;
   if (!w || !fast_) return;
@@ -97,7 +123,6 @@ void InteractiveQuality::restore()
     if (actor) actor->GetProperty()->SetLineWidth(width);
   widths_.clear();
   fast_ = false;
-  view_->scheduleRender();
 }
 
 }  // namespace spira::ui

@@ -36,9 +36,18 @@ class InteractiveQuality : public QObject {
   // One fast frame now (a colouring or build-range change), the full-quality one when idle.
   void fastFrame();
   bool fast() const { return fast_; }
+  // While a background job runs, frames stay fast: the job competes with the renderer for the
+  // same cores, and a full-quality software-OpenGL frame of a large part (80-130 ms the first
+  // time) would freeze the window. Full quality returns once released and the view is still.
+  void hold();
+  void release();
+  bool held() const { return held_; }
+  // Full quality for the next frame, now (a screenshot is a still picture); no render.
+  void fullQualityNow();
 
  private:
   void restore();
+  void applyFullQuality();
 
   SceneView* view_;
   // The view's VTK objects, weakly: this object (a child of the view) outlives the view's scene.
@@ -50,6 +59,7 @@ class InteractiveQuality : public QObject {
   int samples_ = 0;
   std::vector<std::pair<vtkWeakPointer<vtkActor>, double>> widths_;  // wide-line actors and their widths
   bool fast_ = false;
+  bool held_ = false;
 };
 
 }  // namespace spira::ui

@@ -19,11 +19,12 @@
 #include "builtin_plugins.h"
 #include "spira/base/version.h"
 #include "spira/ui/application.h"
+#include "spira/ui/cell_workspace.h"
 #include "spira/ui/comfort_features.h"
 #include "spira/ui/display_panel.h"
 #include "spira/ui/document_tree.h"
-#include "spira/ui/cell_workspace.h"
 #include "spira/ui/help_dialogs.h"
+#include "spira/ui/interactive_quality.h"
 #include "spira/ui/joint_chart.h"
 #include "spira/ui/log_panel.h"
 #include "spira/ui/path_inspector.h"
@@ -369,9 +370,14 @@ void MainWindow::showAbout()
 
 QImage MainWindow::captureImage()
 {
+  // A picture is still: drawn at full quality even while a job keeps the view fast.
+  auto* quality = view_->findChild<InteractiveQuality*>();
+  if (quality) quality->fullQualityNow();
   view_->render();
   QApplication::processEvents();
-  return grab().toImage();
+  QImage image = grab().toImage();
+  if (quality && quality->held()) quality->hold();
+  return image;
 }
 
 }  // namespace spira::ui

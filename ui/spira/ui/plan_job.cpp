@@ -37,12 +37,15 @@ nlohmann::json timingsJson(const StageTimings& timings)
 std::string summaryLine(const PlanOutput& plan)
 {
   const SpiralReport& s = plan.spiral.report;
-  char text[320];
+  char ramps[96] = "";
+  if (s.rampHeightMax > 0.0)
+    std::snprintf(ramps, sizeof ramps, " (ramps %.3f to %.3f mm)", s.rampHeightMin, s.rampHeightMax);
+  char text[400];
   std::snprintf(
       text, sizeof text,
-      "%d revolutions%s, %zu points, path %.2f m, deposit height %.3f to %.3f mm, build time %.1f min",
+      "%d revolutions%s, %zu points, path %.2f m, deposit height %.3f to %.3f mm%s, build time %.1f min",
       s.nRevolutions - s.collapsedRevolutions, plan.hasClosure ? " and the closure point" : "", s.nPoints,
-      s.pathLength / 1000.0, s.heightMin, s.heightMax, plan.process.buildTime / 60.0);
+      s.pathLength / 1000.0, s.heightMin, s.heightMax, ramps, plan.process.buildTime / 60.0);
   return text;
 }
 

@@ -243,6 +243,11 @@ void PlanPanel::refreshVerdict()
     lines << tr("Deposit height %1 to %2 (window %3 to %4)")
                  .arg(mmText(j.value("height_min", 0.0)), mmText(j.value("height_max", 0.0)),
                       mmText(j.value("h_min", 0.0)), mmText(j.value("h_max", 0.0)));
+    // The ramps climb from the substrate and level the top across the whole window: said here so
+    // the colours at the bottom and top rows do not contradict the line above.
+    if (const double rampMax = j.value("ramp_height_max", 0.0); rampMax > 0.0)
+      lines << tr("Start-up and closing ramps %1 to %2")
+                   .arg(mmText(j.value("ramp_height_min", 0.0)), mmText(rampMax));
     if (const auto& process = r.report(Stage::Process); r.process && process) {
       lines << tr("Build time %1 min").arg(loc.toString(process->value("build_time_s", 0.0) / 60.0, 'f', 1));
     } else {

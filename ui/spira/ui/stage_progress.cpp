@@ -57,6 +57,8 @@ void StageProgress::setProgress(double fraction, const QString& what)
     const PlanStageSpan& s = spans[static_cast<size_t>(i)];
     const double within = std::clamp((fraction - s.begin) / (s.end - s.begin), 0.0, 1.0);
     bars_[i]->setValue(i < current_ ? 100 : i > current_ ? 0 : static_cast<int>(std::floor(100.0 * within)));
+    // A font change relayouts the whole window (10-17 ms on a busy machine): only when the stage moves on.
+    if (labels_[i]->font().bold() == (i == current_)) continue;
     QFont f = labels_[i]->font();
     f.setBold(i == current_);
     labels_[i]->setFont(f);

@@ -12,6 +12,7 @@
 
 #include "spira/base/error.h"
 #include "spira/base/progress.h"
+#include "spira/ui/background_priority.h"
 
 namespace spira::ui {
 
@@ -67,6 +68,7 @@ bool TaskRunner::start(const QString& title, Job job, Done done, Display display
   shared_ = std::make_shared<Shared>();
   std::shared_ptr<Shared> shared = shared_;
   QThread* thread = QThread::create([shared, job = std::move(job)] {
+    const BackgroundPriority yieldToTheGui;
     TaskOutcome out;
     try {
       job(shared->progress);
@@ -112,6 +114,7 @@ bool TaskRunner::start(const QString& title, Job job, Done done, Display display
   }
   poll_->start();
   thread->start();
+  emit started();
   return true;
 }
 

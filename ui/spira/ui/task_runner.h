@@ -63,6 +63,8 @@ class TaskRunner : public QObject {
   int abandonedCount() const { return static_cast<int>(abandoned_.size()); }
 
  signals:
+  // Emitted when a job has been handed to its thread.
+  void started();
   // Emitted on the GUI thread once the job has returned or thrown, or was abandoned on cancel.
   void finished(const spira::ui::TaskOutcome& outcome);
   // The job's latest report (fraction of the whole job in [0, 1], stage name), polled a few
