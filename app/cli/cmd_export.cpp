@@ -48,6 +48,8 @@ struct ExportSource {
   nlohmann::json report = nlohmann::json::object();
   PlanSettings settings;
   std::vector<bool> plannedCollision;  // from the plan's joints.csv: points it left in collision
+  Transform placement =
+      Transform::Identity();  // the project's T_world_part: a tilt turns the part on its mount
 };
 
 // The collision column (the last) of a joints.csv; empty when the file is missing or does not
@@ -84,6 +86,7 @@ ExportSource projectSource(const fs::path& file)
   }
   s.partName = doc.part() ? (doc.part()->sourcePath.empty() ? doc.part()->name : doc.part()->sourcePath)
                           : file.stem().string();
+  if (doc.part()) s.placement = doc.part()->T_world_part;
   // The stage reports carry the plan's key figures (revolutions, heights, length) for the header.
   for (Stage stage : {Stage::Spiral, Stage::Process, Stage::Kinematics})
     if (const auto& r = doc.results().report(stage); r && r->is_object())
@@ -189,7 +192,8 @@ int cmdExport(const std::vector<std::string>& argv)
     source.plannedCollision.clear();  // found with another cell's torch and links
   }
   const std::optional<RobotCell> cell =
-      source.cell ? std::optional<RobotCell>(RobotCell(*source.cell)) : std::nullopt;
+      source.cell ? std::optional<RobotCell>(RobotCell(cellForPlacement(*source.cell, source.placement)))
+                  : std::nullopt;
   if (cell && !cell->canSolve()) throw InputError(cell->ikRefusal(), "choose a cell with a 6-axis arm");
   if (csv) return writeCsv(source, cell, outDir);
   if (!cell) std::cerr << "note: no cell: the program's targets are torch poses in the part frame\n";

@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 
 #include "document/document_test_data.h"
+#include "spira/base/transform.h"
 #include "spira/document/document.h"
 #include "spira/document/invalidation.h"
 
@@ -41,8 +42,25 @@ TEST(Invalidation, EachSettingKindDropsExactlyItsStages)
        before(Stage::Field)},
       {"remove part", [](Document& d) { d.clearPart(); }, before(Stage::Field)},
       {"lower boundary", [](Document& d) { d.setLowerBoundaryOverride(0); }, before(Stage::Field)},
-      {"placement", [](Document& d) { d.setPartPlacement(Transform(Eigen::Translation3d(0, 0, 9))); },
+      // Moved, or turned about the world's vertical: the part is built along the same direction.
+      {"placement",
+       [](Document& d) {
+         Transform T = d.part()->T_world_part;
+         T.translation() += Vec3(0, 0, 9);
+         d.setPartPlacement(T);
+       },
        before(Stage::Kinematics)},
+      {"turn about the vertical",
+       [](Document& d) {
+         d.setPartPlacement(Transform(Eigen::AngleAxisd(0.5, Vec3::UnitZ())) * d.part()->T_world_part);
+       },
+       before(Stage::Kinematics)},
+      // A tilt changes the build direction in the part frame: the plan starts over.
+      {"tilt",
+       [](Document& d) {
+         d.setPartPlacement(Transform(Eigen::AngleAxisd(0.3, Vec3::UnitX())) * d.part()->T_world_part);
+       },
+       before(Stage::Field)},
       {"part name",
        [](Document& d) {
          Part p = *d.part();

@@ -5,9 +5,13 @@
 #include <array>
 #include <regex>
 
+#include <QAction>
 #include <QComboBox>
+#include <QDockWidget>
 #include <QDoubleSpinBox>
 #include <QFileInfo>
+#include <QMenu>
+#include <QMenuBar>
 
 #include <gtest/gtest.h>
 #include <vtkRenderer.h>
@@ -103,6 +107,20 @@ TEST(CellView, BundledCellAroundThePart)
   EXPECT_DOUBLE_EQ(doc.cell()->tool.T_flange_tcp.translation().z(), 400.0);
   doc.undo();
   EXPECT_DOUBLE_EQ(doc.cell()->tool.T_flange_tcp.translation().z(), 350.0);
+
+  // Both cell docks can be closed and brought back from the View menu.
+  for (QDockWidget* dock : {cells->cellDock(), cells->simulationDock()}) {
+    QAction* toggle = dock->toggleViewAction();
+    bool listed = false;
+    for (QAction* a : w.menuBar()->actions())
+      if (a->menu() && a->text().remove('&') == "View")
+        listed = listed || a->menu()->actions().contains(toggle);
+    EXPECT_TRUE(listed) << dock->windowTitle().toStdString();
+    dock->close();
+    EXPECT_FALSE(dock->isVisible());
+    toggle->trigger();
+    EXPECT_TRUE(dock->isVisible());
+  }
 
   // "No cell" removes it (undoably) and the robot goes.
   emit combo->activated(0);

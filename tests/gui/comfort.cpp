@@ -340,7 +340,8 @@ TEST(InteractiveQuality, FastWhileAJobRunsFullQualityAfterwardsAndInPictures)
   ASSERT_TRUE(heldWhileRunning);
   ASSERT_TRUE(captured);
   ASSERT_GT(frames.size(), captureFrame);
-  for (size_t i = 0; i < frames.size(); ++i) EXPECT_EQ(frames[i], i == captureFrame ? samples : 0) << "frame " << i;
+  for (size_t i = 0; i < frames.size(); ++i)
+    EXPECT_EQ(frames[i], i == captureFrame ? samples : 0) << "frame " << i;
   EXPECT_FALSE(quality->held());
   ASSERT_TRUE(waitFor([&] { return !quality->fast(); }, 3000));
   EXPECT_EQ(rw->GetMultiSamples(), samples);

@@ -1,6 +1,9 @@
 // Placing the part on the substrate from the Placement dock: move, rotate, drop, choose the base
 // loop; every edit one undo step, the view following, and the plan following the part.
+#include <algorithm>
 #include <cmath>
+#include <memory>
+#include <vector>
 
 #include <QComboBox>
 #include <QDoubleSpinBox>
@@ -11,12 +14,18 @@
 #include <vtkPolyData.h>
 #include <vtkPolyDataMapper.h>
 
+#include "spira/document/cell_file.h"
 #include "spira/document/document.h"
+#include "spira/document/kinematics_result.h"
+#include "spira/io/mesh_writers.h"
 #include "spira/mesh/mesh_primitives.h"
+#include "spira/ui/cell_workspace.h"
 #include "spira/ui/comfort_features.h"
 #include "spira/ui/main_window.h"
 #include "spira/ui/placement_panel.h"
+#include "spira/ui/robot_layer.h"
 #include "spira/ui/scene_view.h"
+#include "spira/ui/simulation_panel.h"
 #include "spira/ui/spiral_layer.h"
 #include "support/gui_test_support.h"
 #include "support/test_support.h"
@@ -181,6 +190,67 @@ TEST(Placement, ThePlanFollowsThePlacedPart)
   ASSERT_EQ(doc.results().spiral->size(), planned->size());
   for (size_t i = 0; i < planned->size(); i += 97)
     EXPECT_NEAR((doc.results().spiral->points[i].position - planned->points[i].position).norm(), 0.0, 1e-9);
+}
+
+// A part stored lying on its side but placed upright stands upright on the robot's table too:
+// the cell holds it as the scene places it. Its motion is the upright part's, joint for joint,
+// the robot is drawn upright around it and the torch lands on the drawn path.
+TEST(Placement, ATiltedPartStandsUprightInTheCell)
+{
+  TempDir dir;
+  const std::filesystem::path cellFile = sourceDir() / "resources" / "cells" / "kuka_kr16_2_table.cell";
+  const Transform R(Eigen::AngleAxisd(90 * kDeg, Vec3::UnitX()));
+  const TriangleMesh upright = makeOpenCylinder(30.0, 60.0, kCylinderSegments, kCylinderRings);
+  writeMesh(upright, dir.path() / "upright.stl", MeshFileFormat::StlBinary);
+  writeMesh(upright.transformed(R.inverse()), dir.path() / "lying.stl", MeshFileFormat::StlBinary);
+
+  struct Run {
+    std::shared_ptr<const KinematicsResult> k;
+    Transform T_world_part;
+    Transform base;  // the robot's base link in the scene
+    std::vector<double> tcpError;
+  };
+  auto run = [&](const char* file, const Transform& turn) {
+    Run out;
+    Document doc;
+    MainWindow w(doc, MainWindowOptions{false, false});
+    showAndWait(w);
+    EXPECT_TRUE(openAndWait(w, qpath(dir.path() / file)));
+    doc.setPartPlacement(turn);
+    doc.setCell(readCellFile(cellFile));
+    EXPECT_TRUE(planAndWait(w));
+    out.k = doc.results().kinematics;
+    if (!out.k) return out;
+    out.T_world_part = doc.part()->T_world_part;
+    ui::RobotLayer& robot = w.cellWorkspace()->robotLayer();
+    out.base = robot.linkTransform(0);
+    ui::SimulationPanel* sim = w.cellWorkspace()->simulationPanel();
+    for (size_t i : {size_t{0}, out.k->size() / 2, out.k->size() - 1}) {
+      sim->setIndex(i);
+      out.tcpError.push_back(
+          (robot.tcpTransform().translation() - out.T_world_part * out.k->path.points[i].position).norm());
+    }
+    return out;
+  };
+  const Run straight = run("upright.stl", Transform::Identity());
+  const Run tilted = run("lying.stl", R);
+  ASSERT_TRUE(straight.k && tilted.k);
+  ASSERT_EQ(tilted.k->size(), straight.k->size());
+  // The same motion: within a thousandth of a degree on every axis.
+  double worst = 0.0;
+  for (size_t i = 0; i < straight.k->size(); ++i)
+    for (size_t a = 0; a < 6; ++a)
+      worst = std::max(
+          worst, std::abs(tilted.k->joints.points[i].robotDeg[a] - straight.k->joints.points[i].robotDeg[a]));
+  EXPECT_LT(worst, 1e-3);
+  // The build direction points up in the world for both, and the robot stands the same way.
+  for (size_t i = 0; i < tilted.k->size(); i += 101)
+    EXPECT_NEAR((tilted.T_world_part.linear() * tilted.k->path.points[i].build -
+                 straight.T_world_part.linear() * straight.k->path.points[i].build)
+                    .norm(),
+                0.0, 1e-6);
+  EXPECT_LT((tilted.base.matrix() - straight.base.matrix()).cwiseAbs().maxCoeff(), 1e-6);
+  for (double e : tilted.tcpError) EXPECT_LT(e, 1e-4);
 }
 
 }  // namespace

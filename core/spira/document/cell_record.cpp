@@ -87,6 +87,20 @@ bool CellRecord::operator==(const CellRecord& o) const
          robotAxes == o.robotAxes && positionerAxes == o.positionerAxes;
 }
 
+Transform mountPartForPlacement(const Transform& T_mount_part, const Transform& T_world_part)
+{
+  Transform turn = Transform::Identity();
+  turn.linear() = T_world_part.linear();
+  return T_mount_part * turn;
+}
+
+CellRecord cellForPlacement(const CellRecord& cell, const Transform& T_world_part)
+{
+  CellRecord c = cell;
+  c.T_mount_part = mountPartForPlacement(cell.T_mount_part, T_world_part);
+  return c;
+}
+
 nlohmann::json cellRecordToJson(const CellRecord& c)
 {
   nlohmann::json j;

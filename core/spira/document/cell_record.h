@@ -84,6 +84,14 @@ struct CellRecord {
   bool operator!=(const CellRecord& o) const { return !(*this == o); }
 };
 
+// The cell with the part turned on its mount the way the document turns it in the world
+// (T_world_part's rotation; its translation is the scene's business). The cell's T_mount_part then
+// places the part's build frame, the one it is planned in with the world's up: a part lying in
+// its file but placed upright stands upright on the table too.
+CellRecord cellForPlacement(const CellRecord& cell, const Transform& T_world_part);
+// Its T_mount_part alone.
+Transform mountPartForPlacement(const Transform& T_mount_part, const Transform& T_world_part);
+
 // JSON form (also usable as a stand-alone cell file). Transforms are 16 numbers, row-major.
 // Throws InputError naming the bad field.
 nlohmann::json cellRecordToJson(const CellRecord& c);

@@ -12,7 +12,8 @@ namespace {
 enum class Input {
   PartGeometry,     // mesh or source unit
   PartBoundary,     // lower-boundary choice: the field starts from it
-  PartPlacement,    // T_world_part: the path lives in the part frame
+  PartPlacement,    // T_world_part moved or turned about the vertical: the path lives in the part frame
+  PartTilt,         // T_world_part's "up" changed: the part is planned with the world's up
   PartLabel,        // name or source path: only the program header shows them
   Substrate,        // where the part is built
   Decomposer,       // chosen decomposer id, or the values of its section
@@ -32,19 +33,13 @@ struct Rule {
   std::optional<Stage> from;
 };
 const Rule kInvalidation[] = {
-    {Input::PartGeometry, Stage::Field},
-    {Input::PartBoundary, Stage::Field},
-    {Input::PartPlacement, Stage::Kinematics},
-    {Input::PartLabel, Stage::Export},
-    {Input::Substrate, Stage::Field},
-    {Input::Decomposer, Stage::Generatrices},
-    {Input::ClosureFinder, Stage::Generatrices},
-    {Input::SpiralSection, Stage::Spiral},
-    {Input::ProcessSection, Stage::Process},
-    {Input::Cell, Stage::Kinematics},
-    {Input::ExporterSection, Stage::Export},
-    {Input::ImporterSection, std::nullopt},
-    {Input::InactiveSection, std::nullopt},
+    {Input::PartGeometry, Stage::Field},       {Input::PartBoundary, Stage::Field},
+    {Input::PartPlacement, Stage::Kinematics}, {Input::PartTilt, Stage::Field},
+    {Input::PartLabel, Stage::Export},         {Input::Substrate, Stage::Field},
+    {Input::Decomposer, Stage::Generatrices},  {Input::ClosureFinder, Stage::Generatrices},
+    {Input::SpiralSection, Stage::Spiral},     {Input::ProcessSection, Stage::Process},
+    {Input::Cell, Stage::Kinematics},          {Input::ExporterSection, Stage::Export},
+    {Input::ImporterSection, std::nullopt},    {Input::InactiveSection, std::nullopt},
     {Input::OtherSection, Stage::Field},
 };
 
@@ -85,7 +80,12 @@ std::vector<Input> changedInputs(const DocumentState& a, const DocumentState& b)
     if (!a.part != !b.part || !sameValue(pa.mesh, pb.mesh) || pa.sourceUnit != pb.sourceUnit)
       inputs.push_back(Input::PartGeometry);
     if (pa.lowerBoundaryOverride != pb.lowerBoundaryOverride) inputs.push_back(Input::PartBoundary);
-    if (!codec::sameTransform(pa.T_world_part, pb.T_world_part)) inputs.push_back(Input::PartPlacement);
+    if (!codec::sameTransform(pa.T_world_part, pb.T_world_part)) {
+      // The world's up seen from the part: what the planner builds along.
+      const Vec3 upA = pa.T_world_part.linear().transpose() * Vec3::UnitZ();
+      const Vec3 upB = pb.T_world_part.linear().transpose() * Vec3::UnitZ();
+      inputs.push_back((upA - upB).norm() > 1e-12 ? Input::PartTilt : Input::PartPlacement);
+    }
     if (pa.name != pb.name || pa.sourcePath != pb.sourcePath) inputs.push_back(Input::PartLabel);
   }
   if (!sameValue(a.substrate, b.substrate)) inputs.push_back(Input::Substrate);

@@ -16,15 +16,28 @@ TriangleMesh PlacementFrame::toBuild(const TriangleMesh& partMesh) const
   return partMesh.transformed(T);
 }
 
+namespace {
+
+void rotate(Trajectory& trajectory, const Mat3& R)
+{
+  for (TrajectoryPoint& p : trajectory.points) {
+    p.position = R * p.position;
+    p.normal = R * p.normal;
+    p.tangent = R * p.tangent;
+    p.build = R * p.build;
+  }
+}
+
+}  // namespace
+
+void PlacementFrame::toBuild(Trajectory& trajectory) const
+{
+  rotate(trajectory, R_);
+}
+
 void PlacementFrame::toPart(Trajectory& trajectory) const
 {
-  const Mat3 Rt = R_.transpose();
-  for (TrajectoryPoint& p : trajectory.points) {
-    p.position = Rt * p.position;
-    p.normal = Rt * p.normal;
-    p.tangent = Rt * p.tangent;
-    p.build = Rt * p.build;
-  }
+  rotate(trajectory, R_.transpose());
 }
 
 void PlacementFrame::toPart(Generatrices& generatrices) const

@@ -22,6 +22,7 @@ class PlacementFrame {
 
   TriangleMesh toBuild(const TriangleMesh& partMesh) const;
   Vec3 pointToPart(const Vec3& build) const { return R_.transpose() * build; }
+  void toBuild(Trajectory& trajectory) const;
   void toPart(Trajectory& trajectory) const;
   void toPart(Generatrices& generatrices) const;
 

@@ -264,7 +264,10 @@ bool ExportDialog::previewBusy() const
 ExportRequest ExportDialog::request() const
 {
   const auto& part = doc_.part();
-  ExportRequest r = makeExportRequest(doc_.results(), part ? part->name : std::string("part"), doc_.cell());
+  // The motion was solved with the part turned on its mount as it is placed: so are the targets.
+  std::shared_ptr<const CellRecord> cell = doc_.cell();
+  if (cell && part) cell = std::make_shared<const CellRecord>(cellForPlacement(*cell, part->T_world_part));
+  ExportRequest r = makeExportRequest(doc_.results(), part ? part->name : std::string("part"), cell);
   r.exporterId = exporterId();
   const auto values = values_.find(r.exporterId);
   if (values != values_.end()) r.exporterParams = values->second;

@@ -8,6 +8,7 @@
 #include "spira/base/error.h"
 #include "spira/base/progress.h"
 #include "spira/pipeline/plan_motion.h"
+#include "spira/planning/placement_frame.h"
 #include "spira/planning/plan_schemas.h"
 #include "spira/robotcell/robot_cell.h"
 
@@ -31,7 +32,21 @@ KinematicsJobResult runKinematics(const DocumentState& snapshot, const Trajector
         processSettingsFrom(snapshot.settings->section(PlanSettings::kProcessSection)).beadWidth;
     settings.substrateZ = substrateZ;
     settings.part = snapshot.part ? snapshot.part->mesh.get() : nullptr;
-    PlanMotion motion = solvePlanMotion(cell, plan, settings, progress);
+    // A tilted part was planned with the world's up: the cell holds it the same way, so the
+    // motion is solved in the build frame (where the substrate is a z plane) and turned back.
+    const PlacementFrame frame(snapshot.part ? snapshot.part->T_world_part : Transform::Identity());
+    Trajectory buildPlan;
+    TriangleMesh buildMesh;
+    if (!frame.identity()) {
+      buildPlan = plan;
+      frame.toBuild(buildPlan);
+      if (settings.part) {
+        buildMesh = frame.toBuild(*settings.part);
+        settings.part = &buildMesh;
+      }
+    }
+    PlanMotion motion = solvePlanMotion(cell, frame.identity() ? plan : buildPlan, settings, progress);
+    if (!frame.identity()) frame.toPart(motion.trajectory);
     nlohmann::json report = motion.report;
     report["seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     auto result = std::make_shared<const KinematicsResult>(

@@ -173,10 +173,13 @@ void RobotLayer::setScenePart(const Transform& T_scene_part)
 
 Transform RobotLayer::cellPart(const std::array<double, 2>& externalDeg) const
 {
+  // The part sits on its mount turned as the scene turns it (cellForPlacement): a tilted part
+  // stands on an upright cell.
   const CellRecord& r = cell_->record();
-  if (!cell_->positioner() || r.mounting != PartMounting::Positioner) return r.T_mount_part;
+  const Transform mountPart = mountPartForPlacement(r.T_mount_part, T_scene_part_);
+  if (!cell_->positioner() || r.mounting != PartMounting::Positioner) return mountPart;
   const Eigen::Vector2d e(degToRad(externalDeg[0]), degToRad(externalDeg[1]));
-  return r.T_world_positioner * cell_->positioner()->forward(e) * r.T_mount_part;
+  return r.T_world_positioner * cell_->positioner()->forward(e) * mountPart;
 }
 
 Transform RobotLayer::sceneCell() const
