@@ -10,6 +10,8 @@
 #include <QDockWidget>
 #include <QDoubleSpinBox>
 #include <QFileInfo>
+#include <QListWidget>
+#include <QLocale>
 #include <QMenu>
 #include <QMenuBar>
 
@@ -17,11 +19,15 @@
 #include <vtkRenderer.h>
 
 #include "spira/base/atomic_file.h"
+#include "spira/document/cell_file.h"
 #include "spira/document/document.h"
+#include "spira/document/kinematics_result.h"
 #include "spira/ui/cell_panel.h"
 #include "spira/ui/cell_workspace.h"
 #include "spira/ui/log_panel.h"
 #include "spira/ui/main_window.h"
+#include "spira/ui/path_inspector.h"
+#include "spira/ui/point_selection.h"
 #include "spira/ui/robot_layer.h"
 #include "spira/ui/scene_view.h"
 #include "spira/ui/simulation_panel.h"
@@ -157,6 +163,46 @@ TEST(CellView, MissingMeshShowsAStandInAndAWarning)
   for (size_t l = 0; l < robot.linkCount(); ++l) standIn = standIn || robot.linkName(l) == "link_3";
   EXPECT_TRUE(standIn) << "link_3 should still show (as a stand-in cube)";
   EXPECT_GE(robot.linkCount(), 7u);
+}
+
+// A part out of the robot's reach: the plan says how many points, and lists them in the messages
+// panel where a click selects the point.
+TEST(CellView, PointsOutOfReachAreListedAndSelectable)
+{
+  Document doc;
+  MainWindow w(doc, MainWindowOptions{false, false});
+  showAndWait(w);
+  TempDir dir;
+  ASSERT_TRUE(openAndWait(w, qpath(writeOpenCylinderStl(dir.path()))));
+  CellRecord cell = readCellFile(sourceDir() / "resources" / "cells" / "kuka_kr16_2_table.cell");
+  // The KR 16-2 reaches about 1.6 m: 3 m in front of it the part is out of reach everywhere.
+  cell.T_mount_part.translation() = Vec3(3000.0, 0.0, 400.0);
+  doc.setCell(cell);
+  ASSERT_TRUE(planAndWait(w));
+  const auto& k = doc.results().kinematics;
+  ASSERT_TRUE(k);
+  size_t unreachable = 0;
+  for (const KinematicsCheck& c : k->checks) unreachable += c.reachable ? 0 : 1;
+  EXPECT_EQ(unreachable, k->size());
+  auto* list = w.logPanel()->findChild<QListWidget*>();
+  ASSERT_NE(list, nullptr);
+  int listed = 0;
+  bool counted = false;
+  for (int row = 0; row < list->count(); ++row) {
+    const QString text = list->item(row)->text();
+    counted = counted || text.contains(QStringLiteral("%1 more point(s) out of reach")
+                                           .arg(QLocale().toString(static_cast<qulonglong>(k->size() - 10))));
+    const QVariant v = list->item(row)->data(ui::PathInspector::kPointRole);
+    if (!v.isValid() || !text.contains("cannot reach")) continue;
+    ++listed;
+    const long long i = v.toLongLong();
+    ASSERT_LT(static_cast<size_t>(i), k->size());
+    EXPECT_FALSE(k->checks[static_cast<size_t>(i)].reachable);
+    emit list->itemClicked(list->item(row));
+    EXPECT_EQ(w.pointSelection()->index(), i);
+  }
+  EXPECT_EQ(listed, ui::PathInspector::kMaxListedPoints);
+  EXPECT_TRUE(counted);
 }
 
 }  // namespace

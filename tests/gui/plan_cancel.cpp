@@ -1,6 +1,7 @@
 // Planning a large part: the window stays live (no modal dialog, the 3D view keeps rotating),
 // the Plan dock shows progress per stage, and Cancel returns at once leaving the previous
 // results as they were. Plus the error and infeasible outcomes in the messages panel.
+#include <algorithm>
 #include <chrono>
 #include <iostream>
 #include <vector>
@@ -10,6 +11,8 @@
 #include <QDoubleSpinBox>
 #include <QElapsedTimer>
 #include <QLabel>
+#include <QListWidget>
+#include <QLocale>
 #include <QPushButton>
 #include <QTimer>
 #include <QToolButton>
@@ -25,8 +28,10 @@
 #include "spira/ui/main_window.h"
 #include "spira/ui/param_field.h"
 #include "spira/ui/param_panel.h"
+#include "spira/ui/path_inspector.h"
 #include "spira/ui/plan_job.h"
 #include "spira/ui/plan_panel.h"
+#include "spira/ui/point_selection.h"
 #include "spira/ui/scene_view.h"
 #include "spira/ui/spiral_layer.h"
 #include "spira/ui/stage_progress.h"
@@ -212,6 +217,27 @@ TEST(PlanCancel, ContradictorySettingsFailWithTheHintAndInfeasiblePlansAreFlagge
     warned = warned ||
              (w.logPanel()->level(i) == LogLevel::Warning && w.logPanel()->text(i).contains("infeasible"));
   EXPECT_TRUE(warned);
+  // The offending points are listed, each message selecting its point when clicked.
+  auto* list = w.logPanel()->findChild<QListWidget*>();
+  ASSERT_NE(list, nullptr);
+  const double hMin = report.value("h_min", 0.0), hMax = report.value("h_max", 0.0);
+  const double tol = report.value("height_tolerance_mm", 0.0);
+  int listed = 0;
+  for (int row = 0; row < list->count(); ++row) {
+    const QVariant v = list->item(row)->data(ui::PathInspector::kPointRole);
+    if (!v.isValid()) continue;
+    ++listed;
+    const long long i = v.toLongLong();
+    ASSERT_GE(i, 0);
+    ASSERT_LT(static_cast<size_t>(i), doc.results().process->size());
+    const double h = doc.results().process->points[static_cast<size_t>(i)].height;
+    EXPECT_TRUE(h < hMin - tol || h > hMax + tol) << "point " << i << " at " << h << " mm";
+    EXPECT_TRUE(list->item(row)->text().contains("Point " + QLocale().toString(i) + " ("))
+        << list->item(row)->text().toStdString();
+    emit list->itemClicked(list->item(row));
+    EXPECT_EQ(w.pointSelection()->index(), i);
+  }
+  EXPECT_EQ(listed, std::min(ui::PathInspector::kMaxListedPoints, report.value("violations", 0)));
   const QImage image = w.captureImage();
   EXPECT_GT(distinctColours(image, sceneRect(w)), 400);
   saveDocScreenshot(image, "plan-infeasible.png");

@@ -30,6 +30,7 @@
 #include "spira/document/results.h"
 #include "spira/ui/frame_glyphs.h"
 #include "spira/ui/log_panel.h"
+#include "spira/ui/offending_points.h"
 #include "spira/ui/plan_job.h"
 #include "spira/ui/point_selection.h"
 #include "spira/ui/process_chart.h"
@@ -355,30 +356,7 @@ void PathInspector::updateChartCursor()
 
 void PathInspector::listOffenders(const Results& results)
 {
-  if (!log_ || !logList_) return;
-  const std::optional<PlanWindow> window = planWindow(results);
-  if (!window) return;
-  std::vector<long long> outside;
-  for (size_t i = 0; i < results.process->size(); ++i)
-    if (window->outside(results.process->points[i].height)) outside.push_back(static_cast<long long>(i));
-  if (outside.empty()) return;
-  const QLocale loc;
-  const int listed = std::min<int>(kMaxListedPoints, static_cast<int>(outside.size()));
-  for (int k = 0; k < listed; ++k) {
-    const long long i = outside[static_cast<size_t>(k)];
-    const TrajectoryPoint& p = results.process->points[static_cast<size_t>(i)];
-    log_->warning(tr("Point %1 (revolution %2): deposit height %3 mm is outside the window %4 .. %5 mm.")
-                      .arg(loc.toString(i))
-                      .arg(p.revolution + 1)
-                      .arg(loc.toString(p.height, 'f', 3), loc.toString(window->hMin, 'f', 2),
-                           loc.toString(window->hMax, 'f', 2)),
-                  tr("Click this message to select the point."));
-    QListWidgetItem* item = logList_->item(logList_->count() - 1);
-    item->setData(kPointRole, i);
-  }
-  if (outside.size() > static_cast<size_t>(listed))
-    log_->info(tr("... and %1 more point(s) outside the window (see the process chart's magenta dots).")
-                   .arg(loc.toString(static_cast<qulonglong>(outside.size() - static_cast<size_t>(listed)))));
+  if (log_ && logList_) listOffendingPoints(*log_, *logList_, results, kPointRole, kMaxListedPoints);
 }
 
 }  // namespace spira::ui
