@@ -2,8 +2,11 @@
 // the bundled FANUC cell with its positioner, plan (the kinematics stage runs in the background
 // plan), colour the spiral by dexterity, then step and play the simulation. Each step checks the
 // model and the view and writes a documentation screenshot.
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <iostream>
+#include <vector>
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -18,12 +21,14 @@
 #include <vtkCamera.h>
 #include <vtkMatrix4x4.h>
 #include <vtkNew.h>
+#include <vtkPolyData.h>
 #include <vtkPolyDataMapper.h>
 #include <vtkRenderer.h>
 #include <nlohmann/json.hpp>
 
 #include "spira/base/units.h"
 #include "spira/document/document.h"
+#include "spira/document/kinematics_result.h"
 #include "spira/ui/bead_layer.h"
 #include "spira/ui/cell_panel.h"
 #include "spira/ui/cell_workspace.h"
@@ -270,9 +275,7 @@ TEST(Simulation, BeadGrowsAndCollisionsShowWhereTheyHappen)
   bead.showUpTo(6);
   EXPECT_EQ(bead.shownFlagCount(), 2);
   // The bead tube lies around the placed path: x from 0 to 60 mm, centred on z = 5.
-  bead.beadActor()->GetMapper()->Update();
-  double b[6];
-  bead.beadActor()->GetMapper()->GetBounds(b);
+  const std::array<double, 6> b = bead.beadBounds();
   EXPECT_NEAR(b[0], 0.0, 1e-9);
   EXPECT_NEAR(b[1], 60.0, 1e-9);
   // Ten sides: across any direction the tube spans between 2 r cos(18 deg) and 2 r.
@@ -281,6 +284,54 @@ TEST(Simulation, BeadGrowsAndCollisionsShowWhereTheyHappen)
   EXPECT_GE(b[5] - b[4], 5.2 * std::cos(kPi / 10.0) - 1e-9);
   bead.setMotion(nullptr, placement, 2.6);
   EXPECT_FALSE(bead.beadActor()->GetVisibility());
+}
+
+// Long paths are tubed chunk by chunk: at every index the bead is exactly the path laid so far,
+// across chunk seams and after jumping backwards. Points 4 mm apart and a 1.5 mm tube: every
+// ring vertex lies at the bead radius from the nearest laid point, and every laid point has its
+// ring, so one point too many or too few shows.
+TEST(Simulation, ChunkedBeadCoversThePathLaidSoFar)
+{
+  constexpr size_t n = 3 * ui::BeadLayer::kChunk + 40;
+  Trajectory path;
+  path.points.resize(n);
+  for (size_t i = 0; i < n; ++i) {
+    const double a = 0.1 * static_cast<double>(i);
+    path.points[i].position = Vec3(40.0 * std::cos(a), 40.0 * std::sin(a), 0.3 * static_cast<double>(i));
+  }
+  JointTrajectory joints;
+  joints.points.resize(n);
+  const KinematicsResult k = makeKinematicsResult(joints, path, nlohmann::json::object());
+  vtkNew<vtkRenderer> renderer;
+  ui::BeadLayer bead(renderer);
+  const double r = 1.5;
+  bead.setMotion(&k, Transform::Identity(), r);
+  for (size_t last : {size_t{10}, ui::BeadLayer::kChunk, ui::BeadLayer::kChunk + 1,
+                      2 * ui::BeadLayer::kChunk + 7, n - 1, size_t{300}, size_t{5}}) {
+    bead.showUpTo(last);
+    EXPECT_EQ(bead.finishedActor()->GetVisibility(), last >= ui::BeadLayer::kChunk) << last;
+    std::vector<bool> ringed(last + 1, false);
+    double worst = 0.0;
+    for (vtkActor* actor : {bead.beadActor(), bead.finishedActor()}) {
+      if (!actor->GetVisibility()) continue;
+      auto* data = vtkPolyData::SafeDownCast(actor->GetMapper()->GetInputAsDataSet());
+      ASSERT_NE(data, nullptr);
+      for (vtkIdType v = 0; v < data->GetNumberOfPoints(); ++v) {
+        double q[3];
+        data->GetPoint(v, q);
+        size_t nearest = 0;
+        double best = 1e300;
+        for (size_t i = 0; i <= last; ++i) {
+          const double d = (path.points[i].position - Vec3(q[0], q[1], q[2])).norm();
+          if (d < best) best = d, nearest = i;
+        }
+        worst = std::max(worst, std::abs(best - r));
+        ringed[nearest] = true;
+      }
+    }
+    EXPECT_LT(worst, 1e-6) << "up to point " << last;
+    EXPECT_EQ(std::count(ringed.begin(), ringed.end(), true), static_cast<long>(last + 1)) << last;
+  }
 }
 
 }  // namespace
