@@ -34,6 +34,7 @@
 #include "spira/ui/cell_workspace.h"
 #include "spira/ui/display_panel.h"
 #include "spira/ui/main_window.h"
+#include "spira/ui/path_layers.h"
 #include "spira/ui/point_selection.h"
 #include "spira/ui/robot_layer.h"
 #include "spira/ui/scene_view.h"
@@ -164,6 +165,11 @@ TEST(Simulation, DomeOnTheFanucPositionerCell)
     EXPECT_LT((robot.tcpTransform().translation() - T_scene_part * p.position).norm(), 1e-4)
         << "step " << step;
     EXPECT_EQ(cells->beadLayer().shownBeadPoints(), step + 1);
+    // The closure point's caption rides on the positioner with the part.
+    const ui::PathLayers& layers = w.sceneView()->pathLayers();
+    ASSERT_TRUE(r.generatrices && r.generatrices->hasClosurePoint);
+    EXPECT_LT((layers.captionAnchor() - T_scene_part * r.generatrices->closurePoint).norm(), 1e-6)
+        << "step " << step;
     EXPECT_TRUE(sim->statusText().startsWith(QStringLiteral("Point %1 of %2").arg(step + 1).arg(k.size())));
   }
   sim->stepBackward();

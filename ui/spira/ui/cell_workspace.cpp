@@ -13,6 +13,7 @@
 #include "spira/ui/bead_layer.h"
 #include "spira/ui/cell_panel.h"
 #include "spira/ui/log_panel.h"
+#include "spira/ui/path_layers.h"
 #include "spira/ui/robot_layer.h"
 #include "spira/ui/scene_view.h"
 #include "spira/ui/simulation_panel.h"
@@ -40,7 +41,7 @@ CellWorkspace::CellWorkspace(QMainWindow& window, Document& doc, SceneView& view
     if (!planDock && window.dockWidgetArea(d) == Qt::RightDockWidgetArea) planDock = d;
   window.addDockWidget(Qt::RightDockWidgetArea, cellDock_);
   simulation_ = new SimulationPanel(
-      *robot_, *bead_, [this] { view_.scheduleRender(); }, &window);
+      *robot_, *bead_, [this] { redraw(); }, &window);
   simulationDock_ = new QDockWidget(tr("Simulation"), &window);
   simulationDock_->setObjectName(QStringLiteral("simulationDock"));
   simulationDock_->setWidget(simulation_);
@@ -90,6 +91,12 @@ void CellWorkspace::rebuildCell()
     simulationDock_->show();
     fitCell();
   }
+  redraw();
+}
+
+void CellWorkspace::redraw()
+{
+  view_.pathLayers().setPartMotion(robot_->partMotion());
   view_.scheduleRender();
 }
 
@@ -108,7 +115,7 @@ void CellWorkspace::updateMotion()
     simulation_->setMotion(k);
   if (k && robot_->hasCell()) fitCell();
   if (!k && robot_->hasCell()) robot_->setHomePose();
-  view_.scheduleRender();
+  redraw();
 }
 
 void CellWorkspace::fitCell()

@@ -42,6 +42,8 @@ class CellWorkspace : public QObject {
   void onChanged(const ChangeSet& c);
   void rebuildCell();
   void updateMotion();
+  // Schedules a frame after the robot moved, with what the positioner carries brought along.
+  void redraw();
 
   Document& doc_;
   SceneView& view_;

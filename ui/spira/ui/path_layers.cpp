@@ -90,9 +90,23 @@ void PathLayers::setGeneratrices(const Generatrices* g, const Transform& T_world
     closure_ = c;
     sphere_->SetCenter(c.x(), c.y(), c.z());
     sphere_->SetRadius(markerRadius);
-    caption_->SetAttachmentPoint(c.x(), c.y(), c.z());
   }
+  setPartMotion(motion_);
   updateVisibility();
+}
+
+void PathLayers::setPartMotion(const Transform& motion)
+{
+  motion_ = motion;
+  if (!closure_) return;
+  const Vec3 c = motion_ * *closure_;
+  caption_->SetAttachmentPoint(c.x(), c.y(), c.z());
+}
+
+Vec3 PathLayers::captionAnchor() const
+{
+  const double* c = caption_->GetAttachmentPoint();
+  return Vec3(c[0], c[1], c[2]);
 }
 
 void PathLayers::setGeneratricesVisible(bool on)

@@ -41,6 +41,11 @@ class PathLayers {
   int stride() const { return stride_; }
   int generatrixCount() const { return generatrixCount_; }
   std::optional<Vec3> closurePoint() const { return closure_; }
+  // The positioner carries the part: its 3D actors move with their user matrix, but the 2D
+  // caption is pinned to a world point, moved here (identity: at rest).
+  void setPartMotion(const Transform& motion);
+  // Where the caption points, in the scene.
+  Vec3 captionAnchor() const;
   vtkActor* linesActor() const { return lines_; }
   vtkActor* closureActor() const { return marker_; }
 
@@ -55,6 +60,7 @@ class PathLayers {
   vtkNew<vtkActor> marker_;
   vtkNew<vtkCaptionActor2D> caption_;
   std::optional<Vec3> closure_;
+  Transform motion_ = Transform::Identity();
   bool linesVisible_ = false;
   bool closureVisible_ = true;
   bool hasLines_ = false;
