@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 #include <tbb/parallel_for.h>
 
@@ -10,15 +11,46 @@
 
 namespace spira {
 
+namespace {
+
+size_t checkedPointCount(const std::vector<std::vector<Vec3>>& contours, const char* who)
+{
+  if (contours.empty() || contours[0].empty())
+    throw InternalError(std::string(who) + " needs non-empty contours");
+  const size_t n = contours[0].size();
+  for (const auto& c : contours)
+    if (c.size() != n)
+      throw InternalError(std::string(who) + " needs the same number of points on every contour");
+  return n;
+}
+
+}  // namespace
+
+PrincipalGeneratrix shortestLinkedGeneratrix(const std::vector<std::vector<Vec3>>& contours,
+                                             const std::optional<Vec3>& closurePoint)
+{
+  const size_t n = checkedPointCount(contours, "shortestLinkedGeneratrix");
+  const size_t C = contours.size();
+  std::vector<double> length(n, 0.0);
+  for (size_t k = 0; k < n; ++k) {
+    for (size_t c = 0; c + 1 < C; ++c) length[k] += (contours[c + 1][k] - contours[c][k]).norm();
+    if (closurePoint) length[k] += (contours[C - 1][k] - *closurePoint).norm();
+  }
+  const double shortest = *std::min_element(length.begin(), length.end());
+  const double tolerance = 1e-12 * std::max(1.0, std::abs(shortest));
+  size_t start = 0;
+  while (length[start] > shortest + tolerance) ++start;
+  PrincipalGeneratrix out;
+  out.length = length[start];
+  out.index.assign(C, start);
+  return out;
+}
+
 PrincipalGeneratrix findPrincipalGeneratrix(const std::vector<std::vector<Vec3>>& contours,
                                             const std::optional<Vec3>& closurePoint, Progress* progress)
 {
   const size_t C = contours.size();
-  if (C == 0 || contours[0].empty()) throw InternalError("findPrincipalGeneratrix needs non-empty contours");
-  const size_t n = contours[0].size();
-  for (const auto& c : contours)
-    if (c.size() != n)
-      throw InternalError("findPrincipalGeneratrix needs the same number of points on every contour");
+  const size_t n = checkedPointCount(contours, "findPrincipalGeneratrix");
 
   // The chain from (c, k) depends only on that point, so next[c][k] and the remaining length
   // from every point, summed from the top down, give every start's chain length in O(n C).

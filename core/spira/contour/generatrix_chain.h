@@ -25,4 +25,13 @@ PrincipalGeneratrix findPrincipalGeneratrix(const std::vector<std::vector<Vec3>>
                                             const std::optional<Vec3>& closurePoint,
                                             Progress* progress = nullptr);
 
+// The same rule on contours already linked point by point, where the point of contour c + 1 that
+// follows point k of contour c is point k itself (resampleLoopFollowing: the least-shear partner
+// takes the place of the nearest point, which, with uneven spacing, may be a neighbour and would
+// shift every generatrix by one point there). The principal generatrix is the shortest chain
+// k, k, ..., k (closure point included), so k_c = k_0 on every contour; ties go to the lowest k.
+// Throws InternalError as findPrincipalGeneratrix does.
+PrincipalGeneratrix shortestLinkedGeneratrix(const std::vector<std::vector<Vec3>>& contours,
+                                             const std::optional<Vec3>& closurePoint);
+
 }  // namespace spira

@@ -10,6 +10,7 @@
 #include "spira/base/units.h"
 #include "spira/contour/branch_detection.h"
 #include "spira/contour/generatrix_chain.h"
+#include "spira/contour/loop_following.h"
 
 namespace spira {
 
@@ -207,9 +208,13 @@ IsoDecomposition decomposeByIsoValues(const TriangleMesh& mesh, const std::vecto
   if (upper) loops.push_back(contourFromBoundaryLoop(mesh, upper->vertices, top, false));
   out.contours.resize(loops.size());
   out.contours[0] = resampleLoop(mesh, loops[0], n, 0.0);
+  // Each contour is parameterised by the one below it, so that generatrix m links the points that
+  // face each other across the gap (see loop_following.h) instead of the points at the same
+  // fraction of each contour's length, which shear across the part where consecutive contours
+  // differ in shape.
   for (size_t c = 1; c < loops.size(); ++c) {
     progress.checkCancel();
-    out.contours[c] = resampleLoopContinuing(mesh, loops[c], n, out.contours[c - 1].points[0].position);
+    out.contours[c] = resampleLoopFollowing(mesh, loops[c], out.contours[c - 1].positions());
   }
   progress.report(0.75, "resampling");
 
@@ -220,9 +225,8 @@ IsoDecomposition decomposeByIsoValues(const TriangleMesh& mesh, const std::vecto
 
   std::vector<std::vector<Vec3>> positions(out.contours.size());
   for (size_t c = 0; c < out.contours.size(); ++c) positions[c] = out.contours[c].positions();
-  SubProgress chainProgress(progress, 0.75, 0.9, "generatrices");
-  const PrincipalGeneratrix principal = findPrincipalGeneratrix(
-      positions, closure ? std::optional<Vec3>(closure->position) : std::nullopt, &chainProgress);
+  const PrincipalGeneratrix principal =
+      shortestLinkedGeneratrix(positions, closure ? std::optional<Vec3>(closure->position) : std::nullopt);
   out.principalIndex = principal.index;
 
   const std::vector<Vec3> vertexNormals = mesh.vertexNormals();

@@ -30,15 +30,19 @@ struct IsoDecomposition {
   std::vector<std::string> warnings;
   std::vector<ResampledLoop>
       contours;  // resampled contours used, base first (the upper edge last on open parts)
-  std::vector<size_t> principalIndex;  // k_c: the principal generatrix's point on each contour
+  std::vector<size_t> principalIndex;  // k_c: the principal generatrix's point on each contour (the
+                                       // contours are linked point by point, so all equal k_0)
   double levelSpacing = 0.0;           // mm, the spacing actually used
 };
 
 // Iso-value decomposition (thesis §2.4): the iso-contours of `field` from the lower edge up to the
 // upper edge (open parts, `upper` given; the field should be the harmonic field, constant on both
 // edges) or to just below the field's maximum (closed parts; the field should be the geodesic
-// distance from the lower edge), each resampled to n points with one orientation and phase, then
-// linked into n generatrices by the principal-generatrix rule (see generatrix_chain.h).
+// distance from the lower edge). The base is resampled to n points evenly spaced; every contour
+// above is resampled to n points parameterised by the one below it (least-shear correspondence,
+// loop_following.h), so point k of each contour lies where point k of the one below lands along
+// the field's gradient, and the generatrices run orthogonal to the contours. The principal
+// generatrix is the shortest of these chains (generatrix_chain.h).
 // `closurePoint` (closed parts): from a closure finder; otherwise the vertex of maximal field.
 //
 // Throws InputError when the field does not fit the part (wrong size, decreasing away from the
