@@ -1,6 +1,9 @@
 // The `spira` executable as a script or CI job runs it: --version, --screenshot and exit codes.
+#include <iostream>
+
 #include <QFile>
 #include <QImage>
+
 #include <QProcess>
 #include <QProcessEnvironment>
 
@@ -77,6 +80,40 @@ TEST(CommandLine, ScreenshotWorksWithQtsOffscreenPlatform)
   const SpiraRun r = runSpira({"--screenshot", png, stl}, env);
   ASSERT_EQ(r.exitCode, 0) << r.err.toStdString();
   expectRenderedWindow(png);
+}
+
+// High DPI: at a scale factor of 2 the window draws at twice the pixels with the same layout,
+// the 3D view filling its place (not a quarter of it) and text at full resolution. Scaled back
+// down it matches the normal window.
+TEST(CommandLine, ScreenshotAtScaleFactorTwoHasTheSameLayoutAtTwiceThePixels)
+{
+  TempDir dir;
+  const QString stl = qpath(writeOpenCylinderStl(dir.path()));
+  QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+  env.insert("QT_QPA_PLATFORM", "offscreen");
+  const QString normalPng = qpath(dir / "scale1.png");
+  ASSERT_EQ(runSpira({"--screenshot", normalPng, stl}, env).exitCode, 0);
+  env.insert("QT_SCALE_FACTOR", "2");
+  const QString largePng = qpath(dir / "scale2.png");
+  const SpiraRun r = runSpira({"--screenshot", largePng, stl}, env);
+  ASSERT_EQ(r.exitCode, 0) << r.err.toStdString();
+  const QImage normal(normalPng), large(largePng);
+  ASSERT_EQ(normal.size(), QSize(1280, 800));
+  ASSERT_EQ(large.size(), QSize(2560, 1600));
+  // The 3D view's middle holds the lit part at both scales.
+  const QRect middle(large.width() / 2 - 200, large.height() / 2 - 200, 400, 400);
+  EXPECT_GT(distinctColours(large, middle), 40);
+  const QImage down = large.scaled(normal.size(), Qt::IgnoreAspectRatio, Qt::SmoothTransformation)
+                          .convertToFormat(normal.format());
+  // Same layout: the messages' time stamps and text antialiasing differ a little, a moved or
+  // quarter-sized view would differ a lot.
+  const QRect view(normal.width() / 2 - 150, normal.height() / 2 - 150, 300, 300);
+  const double whole = meanDifference(down, normal, normal.rect()),
+               inView = meanDifference(down, normal, view);
+  std::cout << "[ measure  ] scale 2 scaled down vs scale 1: mean difference " << whole << " (window), "
+            << inView << " (3D view)\n";
+  EXPECT_LT(whole, 8.0);
+  EXPECT_LT(inView, 2.0);
 }
 
 TEST(CommandLine, ScreenshotWithoutADisplayStillRenders)
