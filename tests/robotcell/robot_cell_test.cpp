@@ -4,8 +4,10 @@
 
 #include "spira/base/error.h"
 #include "spira/base/progress.h"
+#include "spira/base/transform.h"
 #include "spira/base/units.h"
 #include "spira/document/cell_file.h"
+#include "spira/kinematics/joint_path_solver.h"
 #include "spira/path/tool_frame.h"
 #include "spira/robotcell/robot_cell.h"
 #include "support/test_support.h"
@@ -103,6 +105,47 @@ TEST(RobotCell, FanucPositionerCellHoldsTheBuildDirectionVerticalInTheWorld)
                               setup.flangeTcp;
     EXPECT_LT((reached.translation() - (worldPart * toolFrame(path.points[i])).translation()).norm(), 1e-6)
         << i;
+  }
+}
+
+// A part stored lying on its side and placed upright (T_world_part turns it 90 degrees about X):
+// exports solve its part-frame path on cellForPlacement(cell, T_world_part), the planner's
+// kinematics stage solves the upright (build-frame) path on the plain cell. Both must give the
+// same motion, on the fixed table and on the positioner.
+TEST(RobotCell, APlacementTurnsThePartOnItsMountAsInTheWorld)
+{
+  const Transform T_world_part = transformFromXyzRpy(Vec3(12.0, -7.0, 3.0), Vec3(degToRad(90.0), 0.0, 0.4));
+  const Mat3 R = T_world_part.linear();
+  const Trajectory upright = helix();
+  Trajectory lying = upright;
+  for (TrajectoryPoint& p : lying.points) {
+    p.position = R.transpose() * p.position;
+    p.normal = R.transpose() * p.normal;
+    p.tangent = R.transpose() * p.tangent;
+    p.build = R.transpose() * p.build;
+  }
+  for (const char* name : {"kuka_kr16_2_table.cell", "fanuc_m20ia_positioner.cell"}) {
+    const RobotCell plain(bundled(name));
+    const RobotCell placed(cellForPlacement(bundled(name), T_world_part));
+    // Only the mount pose changes, and only by the placement's turn.
+    EXPECT_TRUE(
+        placed.record().T_mount_part.translation().isApprox(plain.record().T_mount_part.translation()));
+    NullProgress progress;
+    const JointTrajectory a =
+        solveJointTrajectory(plain.ik(), plain.convention(), upright, plain.seededSetup(upright), progress);
+    const JointTrajectory b =
+        solveJointTrajectory(placed.ik(), placed.convention(), lying, placed.seededSetup(lying), progress);
+    ASSERT_EQ(a.size(), b.size());
+    size_t reachable = 0;
+    for (size_t i = 0; i < a.size(); ++i) {
+      EXPECT_EQ(a.points[i].reachable, b.points[i].reachable) << name << " " << i;
+      reachable += a.points[i].reachable ? 1 : 0;
+      for (size_t k = 0; k < 6; ++k)
+        EXPECT_NEAR(a.points[i].robotDeg[k], b.points[i].robotDeg[k], 1e-7) << name << " point " << i;
+      for (size_t k = 0; k < 2; ++k)
+        EXPECT_NEAR(a.points[i].externalDeg[k], b.points[i].externalDeg[k], 1e-7) << name << " point " << i;
+    }
+    EXPECT_GT(reachable, size_t{20}) << name;  // a comparison of motions, not of failures
   }
 }
 
