@@ -7,6 +7,7 @@
 #include <QFileInfo>
 #include <QLabel>
 #include <QLocale>
+#include <QMenu>
 #include <QMessageBox>
 #include <QMimeData>
 #include <QSettings>
@@ -117,17 +118,9 @@ MainWindow::MainWindow(Document& doc, MainWindowOptions options, QWidget* parent
   tabifyDockWidget(treeDock_, display_);
   treeDock_->raise();
 
-  // The cell's docks join the plan's column: made before the View menu lists every dock.
-  cellWorkspace_ = new CellWorkspace(*this, doc_, *view_, *log_);
-  QAction* cellToggle = cellWorkspace_->cellDock()->toggleViewAction();
-  cellToggle->setText(tr("C&ell"));
-  cellToggle->setToolTip(tr("The robot cell: robot, torch, positioner and where the part sits"));
-  QAction* simulationToggle = cellWorkspace_->simulationDock()->toggleViewAction();
-  simulationToggle->setText(tr("&Simulation"));
-  simulationToggle->setToolTip(tr("Play the planned motion on the cell"));
   actions_ = Actions::create(
       this, {treeDock_->toggleViewAction(), display_->toggleViewAction(), planPanel_->toggleViewAction(),
-             cellToggle, simulationToggle, log_->toggleViewAction(), chartToggle, jointToggle});
+             log_->toggleViewAction(), chartToggle, jointToggle});
   planPanel_->setPlanAction(actions_.plan);
   // The bottom strip (messages, or the chart with its long abscissa) spans the whole width.
   setCorner(Qt::BottomLeftCorner, Qt::BottomDockWidgetArea);
@@ -147,6 +140,18 @@ MainWindow::MainWindow(Document& doc, MainWindowOptions options, QWidget* parent
   statusBar()->addPermanentWidget(meshLabel_);
   statusBar()->addPermanentWidget(unitsLabel_);
   inspector_ = new PathInspector(selection_, view_, chart_, log_, statusBar(), this);
+  // Made once the window's own docks are laid out, so the cell's docks take their room from the
+  // plan's column and not from the 3D view.
+  cellWorkspace_ = new CellWorkspace(*this, doc_, *view_, *log_);
+  QAction* cellToggle = cellWorkspace_->cellDock()->toggleViewAction();
+  cellToggle->setText(tr("C&ell"));
+  cellToggle->setToolTip(tr("The robot cell: robot, torch, positioner and where the part sits"));
+  QAction* simulationToggle = cellWorkspace_->simulationDock()->toggleViewAction();
+  simulationToggle->setText(tr("&Simulation"));
+  simulationToggle->setToolTip(tr("Play the planned motion on the cell"));
+  for (QWidget* w : actions_.viewIso->associatedWidgets())
+    if (auto* viewMenu = qobject_cast<QMenu*>(w))
+      viewMenu->insertActions(log_->toggleViewAction(), {cellToggle, simulationToggle});
   // A point picked on a chart or in 3D also poses the robot there, once the plan's motion is solved.
   connect(selection_, &PointSelection::changed, this, [this](long long i) {
     SimulationPanel* sim = cellWorkspace_->simulationPanel();
