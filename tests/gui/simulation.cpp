@@ -33,6 +33,7 @@
 #include "spira/ui/cell_panel.h"
 #include "spira/ui/cell_workspace.h"
 #include "spira/ui/display_panel.h"
+#include "spira/ui/interactive_quality.h"
 #include "spira/ui/main_window.h"
 #include "spira/ui/path_layers.h"
 #include "spira/ui/point_selection.h"
@@ -222,12 +223,19 @@ TEST(Simulation, DomeOnTheFanucPositionerCell)
 
   // 6. Playing at 200 x real time moves on by wall-clock time, and pauses.
   sim->setSpeed(200.0);
+  auto* quality = w.sceneView()->findChild<ui::InteractiveQuality*>();
+  ASSERT_NE(quality, nullptr);
+  EXPECT_FALSE(quality->held());
   sim->play();
   EXPECT_TRUE(sim->playing());
+  EXPECT_TRUE(quality->held());  // playback draws quick frames
+  EXPECT_TRUE(quality->fast());
   waitFor([] { return false; }, 600);
   sim->pause();
   EXPECT_FALSE(sim->playing());
   EXPECT_GT(sim->index(), middle + 10);
+  EXPECT_FALSE(quality->held());
+  EXPECT_TRUE(waitFor([&] { return !quality->fast(); }, 3000));  // full quality once still
 }
 
 // A path of 5 points 10 mm apart at 5 mm/s, then 2 points without a speed (fallback 8 mm/s).

@@ -17,6 +17,7 @@
 
 #include "spira/base/error.h"
 #include "spira/ui/autosave.h"
+#include "spira/ui/cell_workspace.h"
 #include "spira/ui/display_panel.h"
 #include "spira/ui/guided_tour.h"
 #include "spira/ui/help_dialogs.h"
@@ -27,6 +28,7 @@
 #include "spira/ui/plan_panel.h"
 #include "spira/ui/preset_bar.h"
 #include "spira/ui/scene_view.h"
+#include "spira/ui/simulation_panel.h"
 #include "spira/ui/task_runner.h"
 #include "spira/ui/theme.h"
 
@@ -59,6 +61,8 @@ ComfortFeatures::ComfortFeatures(MainWindow& window, bool userSession, bool inte
           &InteractiveQuality::fastFrame);
   connect(window.taskRunner(), &TaskRunner::started, quality, &InteractiveQuality::hold);
   connect(window.taskRunner(), &TaskRunner::finished, quality, &InteractiveQuality::release);
+  connect(window.cellWorkspace()->simulationPanel(), &SimulationPanel::playingChanged, quality,
+          [quality](bool playing) { playing ? quality->hold() : quality->release(); });
   placement_ = new PlacementPanel(doc, &window);
   window.addDockWidget(Qt::LeftDockWidgetArea, placement_);
   window.tabifyDockWidget(window.displayPanel(), placement_);

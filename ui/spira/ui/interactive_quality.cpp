@@ -78,7 +78,7 @@ void InteractiveQuality::interactionStarted()
 void InteractiveQuality::interactionEnded()
 {
   // A wheel step is a whole interaction: wait until the camera stays still.
-  if (fast_ && !held_) settle_->start();
+  if (fast_ && holds_ == 0) settle_->start();
 }
 
 void InteractiveQuality::fastFrame()
@@ -90,20 +90,19 @@ void InteractiveQuality::fastFrame()
 
 void InteractiveQuality::hold()
 {
-  held_ = true;
+  ++holds_;
   interactionStarted();
 }
 
 void InteractiveQuality::release()
 {
-  if (!held_) return;
-  held_ = false;
-  interactionEnded();
+  if (holds_ == 0) return;
+  if (--holds_ == 0) interactionEnded();
 }
 
 void InteractiveQuality::restore()
 {
-  if (!fast_ || held_) return;
+  if (!fast_ || holds_ > 0) return;
   applyFullQuality();
   view_->scheduleRender();
 }

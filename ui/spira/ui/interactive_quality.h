@@ -36,12 +36,13 @@ class InteractiveQuality : public QObject {
   // One fast frame now (a colouring or build-range change), the full-quality one when idle.
   void fastFrame();
   bool fast() const { return fast_; }
-  // While a background job runs, frames stay fast: the job competes with the renderer for the
-  // same cores, and a full-quality software-OpenGL frame of a large part (80-130 ms the first
-  // time) would freeze the window. Full quality returns once released and the view is still.
+  // While a background job runs or the simulation plays, frames stay fast: the job competes with
+  // the renderer for the same cores, and a full-quality software-OpenGL frame of a large part
+  // (80-130 ms the first time) would freeze the window; playback is a moving picture. Holds
+  // count: full quality returns once every hold is released and the view is still.
   void hold();
   void release();
-  bool held() const { return held_; }
+  bool held() const { return holds_ > 0; }
   // Full quality for the next frame, now (a screenshot is a still picture); no render.
   void fullQualityNow();
 
@@ -59,7 +60,7 @@ class InteractiveQuality : public QObject {
   int samples_ = 0;
   std::vector<std::pair<vtkWeakPointer<vtkActor>, double>> widths_;  // wide-line actors and their widths
   bool fast_ = false;
-  bool held_ = false;
+  int holds_ = 0;
 };
 
 }  // namespace spira::ui

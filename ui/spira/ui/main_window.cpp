@@ -388,7 +388,7 @@ QImage MainWindow::captureImage()
   view_->render();
   QApplication::processEvents();
   QImage image = grab().toImage();
-  if (quality && quality->held()) quality->hold();
+  if (quality && quality->held()) quality->interactionStarted();
   return image;
 }
 

@@ -145,14 +145,18 @@ void SimulationPanel::play()
   if (index_ + 1 >= motion_->size()) setIndex(0);  // replay from the start
   time_ = clock_.time(index_);
   wall_.start();
+  const bool was = timer_.isActive();
   timer_.start();
   updateControls();
+  if (!was) emit playingChanged(true);
 }
 
 void SimulationPanel::pause()
 {
+  const bool was = timer_.isActive();
   timer_.stop();
   updateControls();
+  if (was) emit playingChanged(false);
 }
 
 double SimulationPanel::speed() const

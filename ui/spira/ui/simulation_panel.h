@@ -51,6 +51,8 @@ class SimulationPanel : public QWidget {
 
  signals:
   void indexChanged(int index);
+  // Playback started (true) or stopped (false).
+  void playingChanged(bool playing);
 
  private:
   void tick();
