@@ -272,6 +272,30 @@ void limitNeighbours(double* row, int n, double limit)
   }
 }
 
+// Smooths ramp scales along the deposited path: `scales` holds them in path order (revolution by
+// revolution, so the end of one revolution runs into the start of the next, as the helix does),
+// and each pass is the binomial filter 1/4, 1/2, 1/4 (the ends repeat themselves). The true height
+// of a point is measured in its frame, whose travel direction is the chord to the next point, so a
+// point stretched more than its neighbours tilts the chords on both sides of it and lowers their
+// heights, which the next iteration answers by stretching them, and the neighbour after lower: an
+// alternating pattern (neighbouring points 0.1-0.4 mm up and down, 0.5 mm apart on a branch's arm
+// next to the crotch) grows from the point-by-point fixed point. The filter removes that pattern
+// (the 1/4, 1/2, 1/4 filter maps it to zero) and any variation over fewer than a few points, which
+// a deposit cannot follow anyway; a constant stretch (an unleaning part: all 1) is left exactly.
+void smoothAlongPath(std::vector<double>& scales, int passes)
+{
+  const size_t m = scales.size();
+  if (m < 3) return;
+  std::vector<double> out(m);
+  for (int p = 0; p < passes; ++p) {
+    for (size_t k = 0; k < m; ++k) {
+      const double before = scales[k == 0 ? 0 : k - 1], after = scales[k + 1 == m ? k : k + 1];
+      out[k] = 0.25 * (before + 2.0 * scales[k] + after);
+    }
+    scales.swap(out);
+  }
+}
+
 // Where a generatrix's scales hardly change over the ramp revolutions (by less than `flat`: the
 // heights within 0.1 %), they all take the largest. Per-revolution scales that differ by such
 // noise still break the design's ramp lengths (start plus end the same on every generatrix) by a
@@ -295,13 +319,15 @@ void flattenNearlyUniform(std::vector<double>& scales, int n, double flat)
 // scale is 1 / cos(theta) measured on `pass`, the layout built with the current scales, so that its
 // true height (nominal step x scale x cos(theta), spec §3.5) is the nominal one. Stretching a point
 // moves it along its generatrix, which turns its layer and changes theta, so the iteration is damped
-// (the scales move half-way to their targets) and kept smooth around each revolution
-// (limitNeighbours). Without that limit, generatrices whose lean changes abruptly (a branch's arm
-// on its tilted saddle cut) stretch one side of a revolution far more than the other, the step
-// between them turns the layer nearly parallel to the generatrices, theta grows and the iteration
-// runs away. The stretch is capped at kMaxStretch (theta = 60 degrees). Stretches within
-// kStretchFloor of 1 (the height within 0.01 % of nominal) are left at 1, so a part whose layers do
-// not lean keeps exactly the designed layout. Returns the largest change of a scale.
+// (the scales move half-way to their targets), smoothed along the path (smoothAlongPath,
+// kSmoothPasses: on the Y tube's arms this took the rows outside the window from 130 and 146 to 25
+// and 28) and kept smooth around each revolution (limitNeighbours). Without that limit,
+// generatrices whose lean changes abruptly (a branch's arm on its tilted saddle cut) stretch one
+// side of a revolution far more than the other, the step between them turns the layer nearly
+// parallel to the generatrices, theta grows and the iteration runs away. The stretch is capped at
+// kMaxStretch (theta = 60 degrees). Stretches within kStretchFloor of 1 (the height within 0.01 %
+// of nominal) are left at 1, so a part whose layers do not lean keeps exactly the designed layout.
+// Returns the largest change of a scale.
 double stretchRamps(const SpiralResult& pass, const std::vector<double>& cosines, RampScales& scales)
 {
   constexpr double kStretchFloor = 1e-4;
@@ -309,6 +335,7 @@ double stretchRamps(const SpiralResult& pass, const std::vector<double>& cosines
   constexpr double kNeighbourStretch = 0.03;
   constexpr double kFlatStretch = 1e-3;
   constexpr double kMaxStretch = 2.0;
+  constexpr int kSmoothPasses = 4;
   const SpiralReport& rep = pass.report;
   const auto& pts = pass.trajectory.points;
   const size_t last = rep.collapsedRevolutions > 0 ? pts.size() - 1 : pts.size();
@@ -329,6 +356,7 @@ double stretchRamps(const SpiralResult& pass, const std::vector<double>& cosines
   const int n = scales.n;
   double change = 0.0;
   for (auto [now, was] : {std::pair(&next.start, &scales.start), std::pair(&next.end, &scales.end)}) {
+    smoothAlongPath(*now, kSmoothPasses);
     for (size_t r = 0; r * n < now->size(); ++r) limitNeighbours(now->data() + r * n, n, kNeighbourStretch);
     flattenNearlyUniform(*now, n, kFlatStretch);
     for (size_t k = 0; k < now->size(); ++k) change = std::max(change, std::abs((*now)[k] - (*was)[k]));
