@@ -5,9 +5,9 @@
 
 #include "fanuc_tp_positions.h"
 #include "fanuc_tp_program.h"
-#include "spira/base/atomic_file.h"
 #include "spira/base/error.h"
 #include "spira/export/export_params.h"
+#include "spira/export/export_steps.h"
 #include "spira/export/fixed_number.h"
 #include "spira/export/program_header.h"
 #include "spira/plugin/plugin_registry.h"
@@ -15,21 +15,6 @@
 namespace spira {
 
 namespace {
-
-ParamDef intDef(std::string key, std::int64_t value, double lo, double hi, std::string label,
-                std::string tooltip, std::string category)
-{
-  ParamDef d;
-  d.key = std::move(key);
-  d.type = ParamType::Int;
-  d.defaultValue = value;
-  d.min = lo;
-  d.max = hi;
-  d.label = std::move(label);
-  d.tooltip = std::move(tooltip);
-  d.category = std::move(category);
-  return d;
-}
 
 ParamDef choiceDef(std::string key, std::string value, std::vector<std::string> choices, std::string label,
                    std::string tooltip, std::string category)
@@ -54,12 +39,12 @@ ParamSchema makeSchema()
                                 "An R-30iB takes at most 15,000 positions per program; the default keeps /MN "
                                 "under 9,999 lines as offline tools usually do."));
   defs.push_back(
-      intDef("uframe", 0, 0, 9, "User frame",
-             "UFRAME_NUM of the targets. With a solved cell they are in the robot's World frame, so "
-             "use 0; without one they are in the part frame, so use the frame measured on the part.",
-             "Frames"));
-  defs.push_back(intDef("utool", 1, 1, 10, "Tool frame",
-                        "UTOOL_NUM of the torch TCP; it must be the TCP the kinematics used.", "Frames"));
+      intParam("uframe", 0, 0, 9, "User frame",
+               "UFRAME_NUM of the targets. With a solved cell they are in the robot's World frame, so "
+               "use 0; without one they are in the part frame, so use the frame measured on the part.",
+               "Frames"));
+  defs.push_back(intParam("utool", 1, 1, 10, "Tool frame",
+                          "UTOOL_NUM of the torch TCP; it must be the TCP the kinematics used.", "Frames"));
   defs.push_back(
       choiceDef("position_format", "cartesian", {"cartesian", "joint"}, "Positions",
                 "cartesian: XYZWPR with the CONFIG string. joint: the solved J1..J6 (needs a solved "
@@ -79,10 +64,10 @@ ParamSchema makeSchema()
     defs.push_back(d);
   }
   defs.push_back(
-      intDef("cnt", 100, 0, 100, "Continuous termination",
-             "CNT value of the path moves: 100 rounds each point most smoothly, 0 slows down to each "
-             "one. The arc start and end points are always FINE.",
-             "Motion"));
+      intParam("cnt", 100, 0, 100, "Continuous termination",
+               "CNT value of the path moves: 100 rounds each point most smoothly, 0 slows down to each "
+               "one. The arc start and end points are always FINE.",
+               "Motion"));
   defs.push_back(
       choiceDef("speed_unit", "auto", {"auto", "mm/sec", "cm/min", "msec"}, "Speed unit",
                 "mm/sec and cm/min write the plan's travel speed rounded to whole units (cm/min is "
@@ -94,15 +79,15 @@ ParamSchema makeSchema()
   defs.push_back(approachSpeedParam(2000.0));
   defs.push_back(jointSpeedParam());
   defs.push_back(processCommandParam());
-  defs.push_back(intDef("weld_schedule", 1, 1, 99, "Weld schedule",
-                        "ArcTool weld schedule of Arc Start[n], struck once at the first deposition point.",
-                        "Process"));
-  defs.push_back(intDef("end_schedule", 1, 1, 99, "End schedule",
-                        "ArcTool schedule of Arc End[n] (crater fill), once at the last deposition point.",
-                        "Process"));
-  defs.push_back(intDef("wfs_output", 1, 1, 512, "WFS analog output",
-                        "AO number that carries the wire-feed setpoint in the analog process modes.",
-                        "Process"));
+  defs.push_back(intParam("weld_schedule", 1, 1, 99, "Weld schedule",
+                          "ArcTool weld schedule of Arc Start[n], struck once at the first deposition point.",
+                          "Process"));
+  defs.push_back(intParam("end_schedule", 1, 1, 99, "End schedule",
+                          "ArcTool schedule of Arc End[n] (crater fill), once at the last deposition point.",
+                          "Process"));
+  defs.push_back(intParam("wfs_output", 1, 1, 512, "WFS analog output",
+                          "AO number that carries the wire-feed setpoint in the analog process modes.",
+                          "Process"));
   const std::string counts = "FANUC analog outputs take the converter's integer count.";
   defs.push_back(wfsOffsetParam(-100000.0, 100000.0, counts));
   defs.push_back(wfsGainParam(100.0, -100000.0, 100000.0, counts));
@@ -163,10 +148,7 @@ std::string FanucTpExporter::description() const
 ExportResult FanucTpExporter::write(const ExportInput& input, const ParamSet& params,
                                     const std::filesystem::path& outDir, Progress& progress) const
 {
-  const ParamSet values = params.withDefaults(schema_);
-  schema_.validate(values);
-  ensureWritableDirectory(outDir);
-  const PathOptions options = readPathOptions(values, schema_, "fanuc_r30ib");
+  const auto [values, options] = startExport(schema_, params, outDir, "fanuc_r30ib");
 
   TpSettings s;
   s.programName = values.getString("program_name");
@@ -241,9 +223,7 @@ ExportResult FanucTpExporter::write(const ExportInput& input, const ParamSet& pa
     result.warnings.push_back("rounding to whole " + unit + " changes a move's speed by up to " +
                               percent(out.worstSpeedError) +
                               "; choose cm/min or msec for slow travel speeds");
-  progress.report(0.9, "writing files");
-  result.files = writeFileSet(outDir, out.files);
-  progress.report(1.0, "done");
+  result.files = finishExport(outDir, out.files, progress);
   return result;
 }
 

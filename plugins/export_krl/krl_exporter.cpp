@@ -3,8 +3,8 @@
 #include <memory>
 
 #include "krl_program.h"
-#include "spira/base/atomic_file.h"
 #include "spira/export/export_params.h"
+#include "spira/export/export_steps.h"
 #include "spira/export/fixed_number.h"
 #include "spira/export/program_header.h"
 #include "spira/plugin/plugin_registry.h"
@@ -13,21 +13,6 @@ namespace spira {
 
 namespace {
 
-ParamDef intDef(std::string key, std::int64_t value, double lo, double hi, std::string label,
-                std::string tooltip, std::string category)
-{
-  ParamDef d;
-  d.key = std::move(key);
-  d.type = ParamType::Int;
-  d.defaultValue = value;
-  d.min = lo;
-  d.max = hi;
-  d.label = std::move(label);
-  d.tooltip = std::move(tooltip);
-  d.category = std::move(category);
-  return d;
-}
-
 ParamSchema makeSchema()
 {
   std::vector<ParamDef> defs;
@@ -35,15 +20,15 @@ ParamSchema makeSchema()
                                   "KRL names: at most 24 letters, digits or '_', starting with a letter."));
   defs.push_back(maxPointsParam(
       5000, 100000, "Each part is a .src/.dat pair; smaller data lists load faster on the KR C4."));
-  defs.push_back(intDef("tool", 1, 1, 16, "Tool number",
-                        "TOOL_DATA index of the torch TCP; it must be the TCP the kinematics used.",
-                        "Frames"));
+  defs.push_back(intParam("tool", 1, 1, 16, "Tool number",
+                          "TOOL_DATA index of the torch TCP; it must be the TCP the kinematics used.",
+                          "Frames"));
   defs.push_back(
-      intDef("base", 0, 0, 32, "Base number",
-             "BASE_DATA index the targets refer to; 0 = $NULLFRAME. With a solved cell the targets "
-             "are in the robot base frame, so use 0 (or a base equal to $ROBROOT); without one they "
-             "are in the part frame, so use the base measured on the part.",
-             "Frames"));
+      intParam("base", 0, 0, 32, "Base number",
+               "BASE_DATA index the targets refer to; 0 = $NULLFRAME. With a solved cell the targets "
+               "are in the robot base frame, so use 0 (or a base equal to $ROBROOT); without one they "
+               "are in the part frame, so use the base measured on the part.",
+               "Frames"));
   {
     ParamDef d;
     d.key = "c_dis";
@@ -63,25 +48,25 @@ ParamSchema makeSchema()
   defs.push_back(approachSpeedParam(2000.0));
   defs.push_back(jointSpeedParam());
   defs.push_back(processCommandParam());
-  defs.push_back(intDef(
+  defs.push_back(intParam(
       "arc_output", 1, 1, 8192, "Arc-on output",
       "$OUT number that switches the arc (TRUE = arc on), set by path-synchronous triggers.", "Process"));
-  defs.push_back(intDef("weld_job", 1, 0, 255, "Weld job",
-                        "Job (synergic parameter set) selected on the job outputs before the first move.",
-                        "Process"));
-  defs.push_back(intDef("end_job", 0, 0, 255, "End job",
-                        "Job selected on the job outputs where the arc is put out (crater fill), switched "
-                        "with the arc-off trigger; 0 keeps the weld job.",
-                        "Process"));
-  defs.push_back(intDef("job_output", 0, 0, 8192, "First job output",
-                        "First $OUT of the job-number outputs; 0 = the program selects no job (the power "
-                        "source keeps its own).",
-                        "Process"));
-  defs.push_back(
-      intDef("job_bits", 8, 1, 16, "Job outputs", "Number of outputs that carry the job number.", "Process"));
-  defs.push_back(intDef("wfs_output", 1, 1, 64, "WFS analog output",
-                        "$ANOUT number that carries the wire-feed setpoint in the analog process modes.",
-                        "Process"));
+  defs.push_back(intParam("weld_job", 1, 0, 255, "Weld job",
+                          "Job (synergic parameter set) selected on the job outputs before the first move.",
+                          "Process"));
+  defs.push_back(intParam("end_job", 0, 0, 255, "End job",
+                          "Job selected on the job outputs where the arc is put out (crater fill), switched "
+                          "with the arc-off trigger; 0 keeps the weld job.",
+                          "Process"));
+  defs.push_back(intParam("job_output", 0, 0, 8192, "First job output",
+                          "First $OUT of the job-number outputs; 0 = the program selects no job (the power "
+                          "source keeps its own).",
+                          "Process"));
+  defs.push_back(intParam("job_bits", 8, 1, 16, "Job outputs", "Number of outputs that carry the job number.",
+                          "Process"));
+  defs.push_back(intParam("wfs_output", 1, 1, 64, "WFS analog output",
+                          "$ANOUT number that carries the wire-feed setpoint in the analog process modes.",
+                          "Process"));
   defs.push_back(wfsOffsetParam(-1.0, 1.0, "KRL analog outputs run from -1.0 to 1.0 (+-10 V)."));
   defs.push_back(wfsGainParam(0.1, -1.0, 1.0, "KRL analog outputs run from -1.0 to 1.0 (+-10 V)."));
   defs.push_back(wfsDeadbandParam());
@@ -110,10 +95,7 @@ std::string KrlExporter::description() const
 ExportResult KrlExporter::write(const ExportInput& input, const ParamSet& params,
                                 const std::filesystem::path& outDir, Progress& progress) const
 {
-  const ParamSet values = params.withDefaults(schema_);
-  schema_.validate(values);
-  ensureWritableDirectory(outDir);
-  const PathOptions options = readPathOptions(values, schema_, "kuka_krc4");
+  const auto [values, options] = startExport(schema_, params, outDir, "kuka_krc4");
   const ExportPath path = prepareExportPath(input, options, progress);
 
   KrlSettings s;
@@ -184,9 +166,7 @@ ExportResult KrlExporter::write(const ExportInput& input, const ParamSet& params
   const std::vector<std::string> header = programHeaderLines(input.header, settings);
 
   const std::vector<OutputFile> files = writeKrlProgram(path, s, header, progress);
-  progress.report(0.9, "writing files");
-  result.files = writeFileSet(outDir, files);
-  progress.report(1.0, "done");
+  result.files = finishExport(outDir, files, progress);
   return result;
 }
 

@@ -1,13 +1,12 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
-#include <regex>
-#include <set>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
 
 #include "cli_runner.h"
+#include "program_text.h"
 #include "support/test_support.h"
 
 namespace fs = std::filesystem;
@@ -52,11 +51,7 @@ TEST(CliExport, CylinderOnTheKukaCellGivesOneArcOnAndOneArcOff)
   EXPECT_EQ(count(src, "$OUT[1]=FALSE"), 1u);
   EXPECT_NE(dat.find("DEFDAT wall1"), std::string::npos);
   // Every LIN target is declared, with the same S bits (one configuration for the whole path).
-  std::set<std::string> status;
-  const std::regex decl("DECL E6POS XP[0-9]+=\\{[^}]*S ([0-9]+),T");
-  for (auto it = std::sregex_iterator(dat.begin(), dat.end(), decl); it != std::sregex_iterator(); ++it)
-    status.insert((*it)[1]);
-  EXPECT_EQ(status.size(), 1u);
+  EXPECT_EQ(e6posStatusValues(dat).size(), 1u);
   EXPECT_EQ(count(src, "LIN XP"), count(dat, "DECL E6POS XP"));
 
   const fs::path tp = dir / "tp";
@@ -70,14 +65,13 @@ TEST(CliExport, CylinderOnTheKukaCellGivesOneArcOnAndOneArcOff)
     const std::string ls = slurp(f.path());
     EXPECT_EQ(count(ls, ":  Arc Start["), 1u);  // instructions, not the header comment
     EXPECT_EQ(count(ls, ":  Arc End["), 1u);
-    std::smatch m;
-    ASSERT_TRUE(std::regex_search(ls, m, std::regex("LINE_COUNT\\s*=\\s*([0-9]+);")));
+    size_t lineCount = 0;
+    ASSERT_TRUE(tpLineCount(ls, lineCount));
     const size_t mn = ls.find("/MN"), pos = ls.find("/POS");
     std::istringstream body(ls.substr(mn, pos - mn));
     size_t lines = 0;
-    for (std::string line; std::getline(body, line);)
-      lines += std::regex_search(line, std::regex("^\\s*[0-9]+:"));
-    EXPECT_EQ(std::stoul(m[1].str()), lines);
+    for (std::string line; std::getline(body, line);) lines += isNumberedTpLine(line);
+    EXPECT_EQ(lineCount, lines);
   }
   EXPECT_TRUE(found);
 }

@@ -4,10 +4,9 @@
 
 #include <fstream>
 #include <memory>
-#include <regex>
-#include <set>
 
 #include "cli_runner.h"
+#include "program_text.h"
 #include "spira/document/cell_file.h"
 #include "spira/document/document.h"
 #include "spira/mesh/mesh_primitives.h"
@@ -100,11 +99,7 @@ TEST(ExportProject, KrlFromTheProjectEqualsKrlFromThePlanFolder)
   // Same cell, same trajectory, same settings: the same motion, target for target.
   EXPECT_EQ(withoutComments(src), withoutComments(slurp(fromPlan / "wall.src")));
   EXPECT_EQ(withoutComments(dat), withoutComments(slurp(fromPlan / "wall.dat")));
-  std::set<std::string> status;
-  const std::regex decl("DECL E6POS XP[0-9]+=\\{[^}]*S ([0-9]+),T");
-  for (auto it = std::sregex_iterator(dat.begin(), dat.end(), decl); it != std::sregex_iterator(); ++it)
-    status.insert((*it)[1]);
-  EXPECT_EQ(status.size(), 1u);
+  EXPECT_EQ(e6posStatusValues(dat).size(), 1u);
 }
 
 TEST(ExportProject, CellFlagOverridesTheProjectCell)

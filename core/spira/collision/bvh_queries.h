@@ -30,21 +30,22 @@ inline bool nodeWithin(const BvhTree::Node& node, const ConvexShape& shape, cons
   return node.leaf() || gjkWithin(shape, BoxShape(node.box), margin);
 }
 
-// `beyond(p, capsule, margin)` may prove primitive p farther than margin + its inflation from the
-// shape's bounding capsule (cheaper than GJK); return false where it cannot tell.
+// `lower(p, capsule)` is a closed-form lower bound of the distance from the shape's bounding capsule
+// to primitive p with its inflation (capsule_bound.h; -infinity where it cannot tell): cheaper than
+// GJK, it proves p farther than a margin, or unable to beat a nearest distance found so far.
 // `hint`, when given, names a primitive to try before the search (kNoHint: none) and receives the
 // one found: a caller asking about nearly the same shape again (the torch at a slightly different
 // tilt) usually hits the same primitive and skips the search. The answer does not depend on it.
 constexpr uint32_t kNoHint = std::numeric_limits<uint32_t>::max();
 
-template <class Keys, class Inflation, class Core, class Beyond>
+template <class Keys, class Inflation, class Core, class Lower>
 bool anyWithin(const BvhTree& tree, const ConvexShape& shape, double margin, uint32_t keyEnd, Keys key,
-               Inflation inflation, Core core, Beyond beyond, uint32_t* hint = nullptr)
+               Inflation inflation, Core core, Lower lower, uint32_t* hint = nullptr)
 {
   const BoundingBox reach = inflated(shape.bounds(), margin);
   const CapsuleBound capsule(shape);
   const auto within = [&](uint32_t p) {
-    if (key(p) >= keyEnd || beyond(p, capsule, margin)) return false;
+    if (key(p) >= keyEnd || lower(p, capsule) > margin + kBoundSlack) return false;
     return gjkWithin(shape, core(p), margin + inflation(p));
   };
   if (hint && *hint < tree.order().size() && within(*hint)) return true;
@@ -57,9 +58,9 @@ bool anyWithin(const BvhTree& tree, const ConvexShape& shape, double margin, uin
       });
 }
 
-template <class Keys, class Inflation, class Core, class Beyond>
+template <class Keys, class Inflation, class Core, class Lower>
 std::vector<size_t> allWithin(const BvhTree& tree, const ConvexShape& shape, double margin, uint32_t keyEnd,
-                              Keys key, Inflation inflation, Core core, Beyond beyond)
+                              Keys key, Inflation inflation, Core core, Lower lower)
 {
   const BoundingBox reach = inflated(shape.bounds(), margin);
   const CapsuleBound capsule(shape);
@@ -67,7 +68,7 @@ std::vector<size_t> allWithin(const BvhTree& tree, const ConvexShape& shape, dou
   tree.search(
       [&](const BvhTree::Node& node) { return nodeWithin(node, shape, capsule, reach, margin, keyEnd); },
       [&](uint32_t p) {
-        if (key(p) < keyEnd && !beyond(p, capsule, margin) &&
+        if (key(p) < keyEnd && !(lower(p, capsule) > margin + kBoundSlack) &&
             gjkWithin(shape, core(p), margin + inflation(p)))
           hits.push_back(p);
         return false;
@@ -82,13 +83,23 @@ constexpr double kExactBoundBelow = 0.8;
 
 // Branch and bound; `slack` (mm) prunes candidates that could beat the best by less than it, so
 // near-ties (a flat nozzle over many nearly equidistant beads) need fewer exact distances.
+// The bounding capsule drops, before any GJK, nodes and primitives whose capsule lower bound already
+// rules them out: GJK's distance is an upper bound of the exact one, so each of them would have been
+// rejected after its GJK anyway, and dropping them changes neither the order of the accepted hits
+// nor the answer, only the cost. The capsule only prunes; it never reorders the search (the box gap
+// still ranks the children), so the answer stays the same bit for bit.
 
-template <class Keys, class Inflation, class Core>
+template <class Keys, class Inflation, class Core, class Lower>
 NearestHit nearestTo(const BvhTree& tree, const ConvexShape& shape, double maxDistance, uint32_t keyEnd,
-                     double slack, Keys key, Inflation inflation, Core core)
+                     double slack, Keys key, Inflation inflation, Core core, Lower lower)
 {
   NearestHit hit;
   const BoundingBox shapeBox = shape.bounds();
+  const CapsuleBound capsule(shape);
+  // A lower bound at or above this cannot give a hit that survives `d + slack >= best`.
+  const auto ruledOut = [&](double lowerBound, double bestSoFar) {
+    return lowerBound - kBoundSlack + slack >= bestSoFar;
+  };
   const double tolerance = std::max(1e-7, 0.1 * slack);
   double best = maxDistance;
   const auto bound = [&](const BvhTree::Node& node) {
@@ -97,11 +108,13 @@ NearestHit nearestTo(const BvhTree& tree, const ConvexShape& shape, double maxDi
     // the best distance (a tilted torch's box swallows whole regions), an exact GJK bound against
     // the node box prunes the subtree instead of opening it.
     const double cheap = boxDistance(shapeBox, node.box) + slack;
-    if (cheap >= best || node.leaf() || cheap > kExactBoundBelow * best) return cheap;
+    if (cheap >= best) return cheap;
+    if (ruledOut(boxLowerBound(capsule, node.box), best)) return std::numeric_limits<double>::infinity();
+    if (node.leaf() || cheap > kExactBoundBelow * best) return cheap;
     return gjkDistance(shape, BoxShape(node.box), tolerance, best).distance + slack;
   };
   const auto visit = [&](uint32_t p, double& bestSoFar) {
-    if (key(p) >= keyEnd) return;
+    if (key(p) >= keyEnd || ruledOut(lower(p, capsule), bestSoFar)) return;
     const double r = inflation(p);
     const GjkResult g = gjkDistance(shape, core(p), tolerance, bestSoFar - slack + r);
     const double d = std::max(0.0, g.distance - r);

@@ -2,16 +2,17 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "spira/collision/convex_shape.h"
 
 namespace spira::bvh_detail {
 
 // A query shape's bounding capsule (ConvexShape::boundingCapsule) and the cheap distance bounds the
-// hierarchies prune with before any GJK. Every test here only says "provably farther than margin";
-// the shape lies inside its capsule, so such a node or primitive could never have been within the
-// margin, and a query's answer does not change, only its cost. A small slack keeps rounding in the
-// closed forms on the safe side.
+// hierarchies prune with before any GJK. Every bound here is at most the true distance: the shape
+// lies inside its capsule, so a node or primitive proven farther than a margin (or than the nearest
+// distance found so far) could never have been within it, and a query's answer does not change,
+// only its cost. A small slack keeps rounding in the closed forms on the safe side.
 struct CapsuleBound {
   Vec3 a = Vec3::Zero(), b = Vec3::Zero();
   double radius = 0.0;
@@ -59,19 +60,32 @@ inline double segmentDistance(const Vec3& p0, const Vec3& p1, const Vec3& q0, co
   return (p0 + s * d1 - (q0 + t * d2)).norm();
 }
 
+// Lower bounds of the distance (mm) from everything in the capsule to a box, to a capsule [q0, q1]
+// of radius r and to a sphere, in closed form (no GJK); -infinity without a capsule. They are exact
+// only up to rounding: compare them with kBoundSlack to spare.
+inline double boxLowerBound(const CapsuleBound& c, const BoundingBox& box)
+{
+  if (!c.valid) return -std::numeric_limits<double>::infinity();
+  return pointSegmentDistance(box.center(), c.a, c.b) - 0.5 * box.size().norm() - c.radius;
+}
+
+inline double capsuleLowerBound(const CapsuleBound& c, const Vec3& q0, const Vec3& q1, double r)
+{
+  if (!c.valid) return -std::numeric_limits<double>::infinity();
+  return segmentDistance(c.a, c.b, q0, q1) - c.radius - r;
+}
+
+inline double sphereLowerBound(const CapsuleBound& c, const Vec3& center, double r)
+{
+  if (!c.valid) return -std::numeric_limits<double>::infinity();
+  return pointSegmentDistance(center, c.a, c.b) - r - c.radius;
+}
+
 // The box is farther than `margin` from everything in the capsule (box centre to the axis, less the
 // box's half diagonal and the radius).
 inline bool boxBeyond(const CapsuleBound& c, const BoundingBox& box, double margin)
 {
-  if (!c.valid) return false;
-  const double reach = pointSegmentDistance(box.center(), c.a, c.b) - 0.5 * box.size().norm() - c.radius;
-  return reach > margin + kBoundSlack;
-}
-
-// The capsule [q0, q1] of radius r is farther than `margin` from everything in the bounding capsule.
-inline bool capsuleBeyond(const CapsuleBound& c, const Vec3& q0, const Vec3& q1, double r, double margin)
-{
-  return c.valid && segmentDistance(c.a, c.b, q0, q1) - c.radius - r > margin + kBoundSlack;
+  return boxLowerBound(c, box) > margin + kBoundSlack;
 }
 
 }  // namespace spira::bvh_detail

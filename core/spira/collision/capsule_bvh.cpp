@@ -10,12 +10,12 @@ namespace spira {
 
 namespace {
 
-// Capsule p is provably beyond the margin of the query shape's bounding capsule.
-auto beyond(const std::vector<Capsule>& capsules)
+// The distance from the query shape's bounding capsule to capsule p is at least this.
+auto lowerBound(const std::vector<Capsule>& capsules)
 {
-  return [&capsules](uint32_t p, const bvh_detail::CapsuleBound& bound, double margin) {
+  return [&capsules](uint32_t p, const bvh_detail::CapsuleBound& bound) {
     const Capsule& c = capsules[p];
-    return bvh_detail::capsuleBeyond(bound, c.a, c.b, c.radius, margin);
+    return bvh_detail::capsuleLowerBound(bound, c.a, c.b, c.radius);
   };
 }
 
@@ -47,7 +47,7 @@ bool CapsuleBvh::intersects(const ConvexShape& shape, double margin, uint32_t ke
   return bvh_detail::anyWithin(
       tree_, shape, margin, keyEnd, [&](uint32_t p) { return key(p); },
       [&](uint32_t p) { return capsules_[p].radius; },
-      [&](uint32_t p) { return SegmentShape(capsules_[p].a, capsules_[p].b); }, beyond(capsules_), hint);
+      [&](uint32_t p) { return SegmentShape(capsules_[p].a, capsules_[p].b); }, lowerBound(capsules_), hint);
 }
 
 NearestHit CapsuleBvh::nearest(const ConvexShape& shape, uint32_t keyEnd, double maxDistance,
@@ -56,7 +56,7 @@ NearestHit CapsuleBvh::nearest(const ConvexShape& shape, uint32_t keyEnd, double
   return bvh_detail::nearestTo(
       tree_, shape, maxDistance, keyEnd, slack, [&](uint32_t p) { return key(p); },
       [&](uint32_t p) { return capsules_[p].radius; },
-      [&](uint32_t p) { return SegmentShape(capsules_[p].a, capsules_[p].b); });
+      [&](uint32_t p) { return SegmentShape(capsules_[p].a, capsules_[p].b); }, lowerBound(capsules_));
 }
 
 std::vector<size_t> CapsuleBvh::within(const ConvexShape& shape, double margin, uint32_t keyEnd) const
@@ -64,7 +64,7 @@ std::vector<size_t> CapsuleBvh::within(const ConvexShape& shape, double margin, 
   return bvh_detail::allWithin(
       tree_, shape, margin, keyEnd, [&](uint32_t p) { return key(p); },
       [&](uint32_t p) { return capsules_[p].radius; },
-      [&](uint32_t p) { return SegmentShape(capsules_[p].a, capsules_[p].b); }, beyond(capsules_));
+      [&](uint32_t p) { return SegmentShape(capsules_[p].a, capsules_[p].b); }, lowerBound(capsules_));
 }
 
 }  // namespace spira

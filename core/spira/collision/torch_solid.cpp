@@ -20,9 +20,13 @@ TorchSolid::TorchSolid(const TorchParams& p, const Transform& T_part_tcp)
 Vec3 TorchSolid::support(const Vec3& d) const
 {
   Vec3 radial = d - d.dot(axis_) * axis_;
+  // For d (nearly) along the axis the difference above is rounding noise with an axial part of its
+  // own size; normalised, it would put the point off the rim, outside the torch, and GJK's distance
+  // bounds would be wrong. Projecting again keeps the point on the rim.
+  radial -= radial.dot(axis_) * axis_;
   const double rn = radial.norm();
   // Along the axis every rim point ties: any radial direction will do.
-  radial = rn > 1e-300 ? Vec3(radial / rn) : axis_.unitOrthogonal();
+  radial = rn > 1e-12 * d.norm() ? Vec3(radial / rn) : axis_.unitOrthogonal();
   int best = 0;
   double bestValue = d.dot(centers_[0]) + radii_[0] * rn;
   for (int k = 1; k < 3; ++k) {

@@ -11,17 +11,16 @@ namespace {
 
 constexpr uint32_t kAllKeys = std::numeric_limits<uint32_t>::max();
 
-// Triangle p, bounded by the sphere about its centroid through its farthest vertex, is provably
-// beyond the margin of the query shape's bounding capsule.
-auto beyond(const TriangleBvh& bvh)
+// The distance from the query shape's bounding capsule to triangle p is at least this: the triangle
+// lies in the sphere about its centroid through its farthest vertex.
+auto lowerBound(const TriangleBvh& bvh)
 {
-  return [&bvh](uint32_t p, const bvh_detail::CapsuleBound& bound, double margin) {
-    if (!bound.valid) return false;
+  return [&bvh](uint32_t p, const bvh_detail::CapsuleBound& bound) {
+    if (!bound.valid) return -std::numeric_limits<double>::infinity();
     const TriangleShape t = bvh.triangle(p);
     const Vec3 c = (t.vertex(0) + t.vertex(1) + t.vertex(2)) / 3.0;
     const double r = std::max({(t.vertex(0) - c).norm(), (t.vertex(1) - c).norm(), (t.vertex(2) - c).norm()});
-    return bvh_detail::pointSegmentDistance(c, bound.a, bound.b) - r - bound.radius >
-           margin + bvh_detail::kBoundSlack;
+    return bvh_detail::sphereLowerBound(bound, c, r);
   };
 }
 
@@ -57,21 +56,21 @@ bool TriangleBvh::intersects(const ConvexShape& shape, double margin) const
 {
   return bvh_detail::anyWithin(
       tree_, shape, margin, kAllKeys, [](uint32_t p) { return p; }, [](uint32_t) { return 0.0; },
-      [&](uint32_t p) { return triangle(p); }, beyond(*this));
+      [&](uint32_t p) { return triangle(p); }, lowerBound(*this));
 }
 
 NearestHit TriangleBvh::nearest(const ConvexShape& shape, double maxDistance, double slack) const
 {
   return bvh_detail::nearestTo(
       tree_, shape, maxDistance, kAllKeys, slack, [](uint32_t p) { return p; }, [](uint32_t) { return 0.0; },
-      [&](uint32_t p) { return triangle(p); });
+      [&](uint32_t p) { return triangle(p); }, lowerBound(*this));
 }
 
 std::vector<size_t> TriangleBvh::within(const ConvexShape& shape, double margin) const
 {
   return bvh_detail::allWithin(
       tree_, shape, margin, kAllKeys, [](uint32_t p) { return p; }, [](uint32_t) { return 0.0; },
-      [&](uint32_t p) { return triangle(p); }, beyond(*this));
+      [&](uint32_t p) { return triangle(p); }, lowerBound(*this));
 }
 
 }  // namespace spira

@@ -24,6 +24,16 @@ constexpr double kMmPerSPerMPerMin = 1000.0 / 60.0;
 
 }  // namespace
 
+ParamDef intParam(std::string key, std::int64_t value, double lo, double hi, std::string label,
+                  std::string tooltip, std::string category)
+{
+  ParamDef d = def(std::move(key), ParamType::Int, value, "", std::move(label), std::move(tooltip),
+                   std::move(category));
+  d.min = lo;
+  d.max = hi;
+  return d;
+}
+
 ParamDef programNameParam(const std::string& defaultName, const std::string& rulesText)
 {
   return def("program_name", ParamType::String, defaultName, "", "Program name",

@@ -21,6 +21,10 @@ ParamDef wfsOffsetParam(double lo, double hi, const std::string& outputText);
 ParamDef wfsGainParam(double defaultGain, double lo, double hi, const std::string& outputText);
 ParamDef wfsDeadbandParam();
 ParamDef forceParam();
+// An integer entry (no unit) for an exporter's own controller settings: output numbers, frame and
+// job indices.
+ParamDef intParam(std::string key, std::int64_t value, double lo, double hi, std::string label,
+                  std::string tooltip, std::string category);
 
 // The shared settings read from `values` (already completed with the schema's defaults).
 PathOptions readPathOptions(const ParamSet& values, const ParamSchema& schema, const std::string& controller);
