@@ -1,6 +1,7 @@
 // Comfort features of the main window: presets per user, autosave and recovery after a crash,
 // light and dark themes, the Help menu (About, shortcuts, guided sample), and the GUI thread
 // staying responsive while a plan runs (UiWatchdog).
+#include <atomic>
 #include <chrono>
 #include <iostream>
 #include <thread>
@@ -27,6 +28,7 @@
 #include <vtkRenderer.h>
 
 #include "spira/base/error.h"
+#include "spira/base/progress.h"
 #include "spira/document/document.h"
 #include "spira/ui/autosave.h"
 #include "spira/ui/comfort_features.h"
@@ -317,29 +319,32 @@ TEST(InteractiveQuality, FastWhileAJobRunsFullQualityAfterwardsAndInPictures)
   onRender->SetCallback([](vtkObject* caller, unsigned long, void* data, void*) {
     static_cast<std::vector<int>*>(data)->push_back(static_cast<vtkRenderWindow*>(caller)->GetMultiSamples());
   });
-  bool heldWhileRunning = false, captured = false;
-  size_t captureFrame = 0;
-  QTimer probe;
-  QObject::connect(&probe, &QTimer::timeout, &w, [&] {
-    if (!quality->held() || captured) return;
-    heldWhileRunning = true;
-    w.sceneView()->scheduleRender();  // a frame while the job runs: fast
-    QTest::qWait(20);
-    captureFrame = frames.size();
-    w.captureImage();  // a picture: full quality, then fast again
-    captured = true;
-    EXPECT_TRUE(quality->held());
-    EXPECT_TRUE(quality->fast());
-  });
   const unsigned long tag = rw->AddObserver(vtkCommand::StartEvent, onRender);
-  probe.start(5);
-  const bool planned = planAndWait(w);
-  probe.stop();
+  // A job that runs until the test lets it finish: the checks cannot race its end.
+  std::atomic<bool> finish{false};
+  ASSERT_TRUE(w.taskRunner()->start(
+      "Held job",
+      [&finish](Progress& progress) {
+        while (!finish) {
+          progress.checkCancel();
+          std::this_thread::sleep_for(std::chrono::milliseconds(5));
+        }
+      },
+      [](const ui::TaskOutcome&) {}, ui::TaskRunner::Display::Signals));
+  EXPECT_TRUE(quality->held());
+  w.sceneView()->scheduleRender();  // a frame while the job runs: fast
+  QTest::qWait(50);
+  const size_t captureFrame = frames.size();
+  w.captureImage();  // a picture: full quality, then fast again
+  EXPECT_TRUE(quality->held());
+  EXPECT_TRUE(quality->fast());
+  w.sceneView()->scheduleRender();
+  QTest::qWait(50);
+  finish = true;
+  ASSERT_TRUE(waitFor([&] { return !w.taskRunner()->busy(); }, 10000));
   rw->RemoveObserver(tag);
-  ASSERT_TRUE(planned);
-  ASSERT_TRUE(heldWhileRunning);
-  ASSERT_TRUE(captured);
-  ASSERT_GT(frames.size(), captureFrame);
+  ASSERT_GT(captureFrame, 0u);
+  ASSERT_GT(frames.size(), captureFrame + 1);
   for (size_t i = 0; i < frames.size(); ++i)
     EXPECT_EQ(frames[i], i == captureFrame ? samples : 0) << "frame " << i;
   EXPECT_FALSE(quality->held());
