@@ -165,14 +165,19 @@ void benchSpiral(long long n)
 
   vtkCamera* camera = view.renderer()->GetActiveCamera();
   double total = 0.0, worst = 0.0;
-  for (int i = 0; i < 60; ++i) {
-    camera->Azimuth(6.0);
-    t = Clock::now();
-    finish(view);
-    const double ms = msSince(t);
-    total += ms;
-    worst = std::max(worst, ms);
-  }
+  // 60 frames turning the camera 6 degrees each: their total and worst time.
+  const auto turn = [&] {
+    total = worst = 0.0;
+    for (int i = 0; i < 60; ++i) {
+      camera->Azimuth(6.0);
+      const auto start = Clock::now();
+      finish(view);
+      const double ms = msSince(start);
+      total += ms;
+      worst = std::max(worst, ms);
+    }
+  };
+  turn();
   std::printf("spiral: %lld points (made in %.0f ms)\n", n, makeMs);
   std::printf("  first frame: %.0f ms (layer build %.0f ms + first render)\n", firstFrameMs, uploadMs);
   std::printf("  60 rotations: mean %.1f ms, max %.1f ms per frame (%.1f fps)\n", total / 60.0, worst,
@@ -181,15 +186,7 @@ void benchSpiral(long long n)
   // As the user drags: InteractiveQuality drops multisampling until the camera is still.
   spira::ui::InteractiveQuality quality(&view);
   quality.interactionStarted();
-  total = worst = 0.0;
-  for (int i = 0; i < 60; ++i) {
-    camera->Azimuth(6.0);
-    t = Clock::now();
-    finish(view);
-    const double ms = msSince(t);
-    total += ms;
-    worst = std::max(worst, ms);
-  }
+  turn();
   quality.interactionEnded();
   std::printf(
       "  60 rotations while dragging (no multisampling, 1-pixel lines): mean %.1f ms, max %.1f ms per frame "
