@@ -2,26 +2,13 @@
 
 #include <algorithm>
 
+#include "skeleton_fit.h"
 #include "spira/base/error.h"
 #include "spira/skeleton/mcf_skeleton.h"
 
 namespace spira {
 
 namespace {
-
-double distanceToLine(const Vec3& p, const Vec3& a, const Vec3& b)
-{
-  const Vec3 d = (b - a).normalized();
-  const Vec3 r = p - a;
-  return (r - r.dot(d) * d).norm();
-}
-
-double largestDistance(const Polyline& points, const Vec3& a, const Vec3& b)
-{
-  double worst = 0.0;
-  for (const Vec3& p : points) worst = std::max(worst, distanceToLine(p, a, b));
-  return worst;
-}
 
 const std::string kIsovalueHint = "use the iso-value strategy (decomposer.isovalue), which needs no skeleton";
 
@@ -69,28 +56,35 @@ AxisChoice chooseProjectionAxis(const TriangleMesh& mesh, const BoundaryLoop& lo
         "the part's skeleton does not rise steadily in z, so there is no single skeleton point "
         "per height to project towards",
         kIsovalueHint + ", or choose axis = vertical for a part of revolution");
-  const Polyline& chain = s.branches.front();
-  if (mode == AxisMode::Skeleton) {
-    out.axis = ProjectionAxis::chain(chain);
-    out.source = "the skeleton";
-    return out;
-  }
-
   double radius = 0.0;
   for (int v : lower.vertices) {
     const Vec3 d = mesh.vertices[v] - centroid;
     radius += std::hypot(d.x(), d.y());
   }
   radius /= static_cast<double>(std::max<size_t>(1, lower.vertices.size()));
+  // Each local fit spans the part's diameter in height: wide enough to average the nodes' jitter
+  // out, short enough to follow a skeleton that bends over a few diameters.
+  const HeightFit fit = fitChainByHeight(s.branches.front(), radius);
+  if (mode == AxisMode::Skeleton) {
+    out.axis = ProjectionAxis::chain(fit.points);
+    out.source = "the skeleton";
+    return out;
+  }
+
+  double z0 = mesh.vertices.empty() ? 0.0 : mesh.vertices.front().z(), z1 = z0;
+  for (const Vec3& v : mesh.vertices) {
+    z0 = std::min(z0, v.z());
+    z1 = std::max(z1, v.z());
+  }
   const double tolerance = 0.05 * radius;
-  if (largestDistance(chain, centroid, centroid + Vec3::UnitZ()) <= tolerance) {
+  if (largestOffsetFromVertical(fit, centroid, z0, z1) <= tolerance) {
     out.axis = ProjectionAxis::vertical(centroid);
     out.source = "the vertical axis through the base centroid (the skeleton runs along it)";
-  } else if (largestDistance(chain, chain.front(), chain.back()) <= tolerance) {
-    out.axis = ProjectionAxis::line(chain.front(), chain.back());
+  } else if (largestOffsetFromLine(fit) <= tolerance) {
+    out.axis = ProjectionAxis::line(fit.points.front(), fit.points.back());
     out.source = "the straight skeleton";
   } else {
-    out.axis = ProjectionAxis::chain(chain);
+    out.axis = ProjectionAxis::chain(fit.points);
     out.source = "the skeleton";
   }
   return out;

@@ -12,7 +12,7 @@ namespace spira {
 
 enum class AxisMode {
   Auto,      // the skeleton; the vertical line through the base centroid when the skeleton runs along it
-  Skeleton,  // the skeleton's chain as it is
+  Skeleton,  // the skeleton's chain (fitted by height)
   Vertical,  // the vertical line through the base centroid, no skeleton computed (fast)
 };
 
@@ -28,10 +28,12 @@ Vec3 loopCentroid(const TriangleMesh& mesh, const BoundaryLoop& loop);
 
 // The axis the envelope points are projected towards. With a skeleton (Auto, Skeleton) the part
 // must be mono-branch with a skeleton rising steadily in z, else InputError says so and points
-// to the iso-value strategy. Auto uses the exact vertical line through the base centroid when
-// every skeleton node lies within 5 % of the base radius of it (a part of revolution standing
-// upright: the line is truer than the skeleton's nodes), the straight line through the skeleton's
-// ends when the nodes lie that close to it, and the skeleton's chain otherwise.
+// to the iso-value strategy. The skeleton's nodes are first fitted as a smooth function of height
+// (skeleton_fit.h). Auto uses the exact vertical line through the base centroid when the fitted
+// skeleton, and its straight line extended over the part's height, lie within 5 % of the base
+// radius of it (a part of revolution standing upright: the line is truer than any skeleton), the
+// fitted straight line when the fitted skeleton lies that close to it, and the fitted chain
+// otherwise.
 AxisChoice chooseProjectionAxis(const TriangleMesh& mesh, const BoundaryLoop& lower, AxisMode mode,
                                 Progress& progress);
 

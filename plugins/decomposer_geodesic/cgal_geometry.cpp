@@ -9,6 +9,7 @@
 #include <CGAL/Surface_mesh_shortest_path.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "path_straightening.h"
@@ -268,8 +269,22 @@ ExactPath SubmeshGeodesics::pathTo(const SurfacePoint& p) const
     return path;
   }
   std::reverse(path.points.begin(), path.points.end());
-  const TriangleMesh& full = impl_->full;
-  straightenPath(path, path.length, [&full](int v) { return full.vertices[static_cast<size_t>(v)]; });
+  const Impl& m = *impl_;
+  StripMesh strip;
+  strip.position = [&m](int v) { return m.full.vertices[static_cast<size_t>(v)]; };
+  strip.opposite = [&m](int a, int b) {
+    std::array<int, 2> out{-1, -1};
+    const int la = m.localVertex(a), lb = m.localVertex(b);
+    if (la < 0 || lb < 0) return out;
+    const HalfedgeIndex h =
+        m.sm.halfedge(VertexIndex(CgalMesh::size_type(la)), VertexIndex(CgalMesh::size_type(lb)));
+    if (h == CgalMesh::null_halfedge()) return out;
+    const HalfedgeIndex sides[2] = {h, m.sm.opposite(h)};
+    for (int k = 0; k < 2; ++k)
+      if (!m.sm.is_border(sides[k])) out[size_t(k)] = m.global(m.sm.target(m.sm.next(sides[k])));
+    return out;
+  };
+  straightenPath(path, path.length, strip);
   return path;
 }
 

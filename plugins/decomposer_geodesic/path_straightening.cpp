@@ -1,6 +1,10 @@
 #include "path_straightening.h"
 
 #include <cmath>
+#include <optional>
+#include <vector>
+
+#include "strip_unfolding.h"
 
 namespace spira::geodesic {
 
@@ -53,17 +57,35 @@ double bestCrossing(const Vec3& a, const Vec3& b, const Vec3& p, const Vec3& q)
 
 }  // namespace
 
-double straightenPath(ExactPath& path, double exactLength, const std::function<Vec3(int)>& vertexPosition,
-                      int maxSweeps)
+double straightenPath(ExactPath& path, double exactLength, const StripMesh& mesh, int maxSweeps)
 {
   std::vector<PathPoint>& pts = path.points;
   double length = polylineLength(pts);
   if (pts.size() < 3 || !(exactLength > 0.0)) return length;
+  if (length > exactLength * (1.0 + 1e-9)) {
+    // Between two points off the edges (the ends, vertices the path bends at) the geodesic is the
+    // straight line of the unfolded strip: put the crossings there at once. Kept only if shorter.
+    std::vector<PathPoint> unfolded{pts.front()};
+    size_t anchor = 0;
+    for (size_t k = 1; k < pts.size(); ++k) {
+      if (k + 1 != pts.size() && onEdge(pts[k])) continue;
+      const std::vector<PathPoint> run(pts.begin() + long(anchor), pts.begin() + long(k) + 1);
+      const std::optional<std::vector<PathPoint>> straight = straightRun(run, mesh);
+      const std::vector<PathPoint>& use = straight ? *straight : run;
+      unfolded.insert(unfolded.end(), use.begin() + 1, use.end());
+      anchor = k;
+    }
+    const double shorter = polylineLength(unfolded);
+    if (shorter < length) {
+      pts = std::move(unfolded);
+      length = shorter;
+    }
+  }
   for (int sweep = 0; sweep < maxSweeps && length > exactLength * (1.0 + 1e-9); ++sweep) {
     for (size_t k = 1; k + 1 < pts.size(); ++k) {
       PathPoint& p = pts[k];
       if (!onEdge(p)) continue;
-      const Vec3 e0 = vertexPosition(p.vertices[0]), e1 = vertexPosition(p.vertices[1]);
+      const Vec3 e0 = mesh.position(p.vertices[0]), e1 = mesh.position(p.vertices[1]);
       const double t = bestCrossing(pts[k - 1].position, pts[k + 1].position, e0, e1);
       p.weights = Vec3(1.0 - t, t, 0.0);
       p.position = (1.0 - t) * e0 + t * e1;

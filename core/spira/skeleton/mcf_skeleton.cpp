@@ -160,7 +160,7 @@ SkeletonResult computeCurveSkeleton(const TriangleMesh& mesh, const SkeletonOpti
     throw AlgorithmError("the mean curvature flow left no skeleton for this part",
                          "check that the part is a thin-walled shell and not a flat sheet");
   const double tolerance =
-      options.monotoneTolerance >= 0 ? options.monotoneTolerance : 0.005 * report.bounds.diagonal();
+      options.monotoneTolerance >= 0 ? options.monotoneTolerance : 0.02 * report.bounds.diagonal();
   SkeletonGraph graph = toGraph(skeleton);
   if (options.pruneSpurs) out.spursPruned = pruneSpurs(graph, mesh);
   if (options.centreInSections) out.nodesCentred = centreInCrossSections(graph, mesh, progress);
