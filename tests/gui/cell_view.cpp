@@ -3,7 +3,6 @@
 // step and moves the cell around the part; a robot whose mesh is missing still shows, with a
 // stand-in and a warning.
 #include <array>
-#include <regex>
 
 #include <QAction>
 #include <QComboBox>
@@ -14,6 +13,7 @@
 #include <QLocale>
 #include <QMenu>
 #include <QMenuBar>
+#include <QString>
 
 #include <gtest/gtest.h>
 #include <vtkRenderer.h>
@@ -141,15 +141,19 @@ TEST(CellView, MissingMeshShowsAStandInAndAWarning)
   TempDir dir;
   const auto robotDir = sourceDir() / "resources" / "robots" / "kuka_kr16_2";
   std::string urdf = readFile((robotDir / "robot.urdf").string());
-  urdf = std::regex_replace(urdf, std::regex("filename=\"meshes/"),
-                            "filename=\"" + robotDir.string() + "/meshes/");
+  urdf = QString::fromStdString(urdf)
+             .replace(QStringLiteral("filename=\"meshes/"),
+                      QString::fromStdString("filename=\"" + robotDir.string() + "/meshes/"))
+             .toStdString();
   const std::string link3 = robotDir.string() + "/meshes/collision/link_3.stl";
   const size_t at = urdf.find(link3);
   ASSERT_NE(at, std::string::npos);
   urdf.replace(at, link3.size(), (dir.path() / "gone" / "link_3.stl").string());
   writeBytes(dir.path() / "robot.urdf", urdf);
   std::string cell = readFile((sourceDir() / "resources" / "cells" / "kuka_kr16_2_table.cell").string());
-  cell = std::regex_replace(cell, std::regex("\\.\\./robots/kuka_kr16_2/robot\\.urdf"), "robot.urdf");
+  cell = QString::fromStdString(cell)
+             .replace(QStringLiteral("../robots/kuka_kr16_2/robot.urdf"), QStringLiteral("robot.urdf"))
+             .toStdString();
   writeBytes(dir.path() / "broken.cell", cell);
 
   Document doc;

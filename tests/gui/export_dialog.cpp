@@ -2,13 +2,13 @@
 // file it would write, the warnings before writing, and the files written where asked (all or
 // none), read back.
 #include <fstream>
-#include <regex>
 
 #include <QAction>
 #include <QComboBox>
 #include <QLabel>
 #include <QPlainTextEdit>
 #include <QPushButton>
+#include <QRegularExpression>
 #include <QSignalSpy>
 #include <QTabWidget>
 
@@ -119,29 +119,32 @@ TEST(ExportDialog, PreviewsWarnsAndWritesTheProgram)
   std::ifstream in(files[0].toStdString(), std::ios::binary);
   const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   EXPECT_NE(text.find("\r\n"), std::string::npos) << "TP files have CRLF line endings";
-  std::smatch m;
-  ASSERT_TRUE(std::regex_search(text, m, std::regex(R"(\d+:\s+Arc Start\[)"))) << "one arc start";
-  const std::string beforeArc = text.substr(0, static_cast<size_t>(m.position(0)));
-  std::smatch move;
-  std::string lastTarget;
-  const std::regex linear(R"(L P\[(\d+)\])");
-  for (auto it = std::sregex_iterator(beforeArc.begin(), beforeArc.end(), linear);
-       it != std::sregex_iterator(); ++it)
-    lastTarget = (*it)[1];
-  ASSERT_FALSE(lastTarget.empty()) << "the arc starts after a linear move onto its first point\n" << beforeArc;
-  const std::regex pose(
-      "P\\[" + lastTarget +
-      R"(\]\{[\s\S]*?X =\s*(-?[\d.]+)\s*mm,\s*Y =\s*(-?[\d.]+)\s*mm,\s*Z =\s*(-?[\d.]+)\s*mm,\s*W =\s*(-?[\d.]+)\s*deg,\s*P =\s*(-?[\d.]+)\s*deg,\s*R =\s*(-?[\d.]+)\s*deg)");
-  ASSERT_TRUE(std::regex_search(text, m, pose));
+  const QString all = QString::fromStdString(text);
+  const QRegularExpressionMatch arc = QRegularExpression(QStringLiteral(R"(\d+:\s+Arc Start\[)")).match(all);
+  ASSERT_TRUE(arc.hasMatch()) << "one arc start";
+  const QString beforeArc = all.left(arc.capturedStart(0));
+  QString lastTarget;
+  QRegularExpressionMatchIterator moves =
+      QRegularExpression(QStringLiteral(R"(L P\[(\d+)\])")).globalMatch(beforeArc);
+  while (moves.hasNext()) lastTarget = moves.next().captured(1);
+  ASSERT_FALSE(lastTarget.isEmpty()) << "the arc starts after a linear move onto its first point\n"
+                                     << beforeArc.toStdString();
+  const QRegularExpressionMatch pose =
+      QRegularExpression(
+          QStringLiteral("P\\[") + lastTarget +
+          QStringLiteral(
+              R"(\]\{[\s\S]*?X =\s*(-?[\d.]+)\s*mm,\s*Y =\s*(-?[\d.]+)\s*mm,\s*Z =\s*(-?[\d.]+)\s*mm,\s*W =\s*(-?[\d.]+)\s*deg,\s*P =\s*(-?[\d.]+)\s*deg,\s*R =\s*(-?[\d.]+)\s*deg)"))
+          .match(all);
+  ASSERT_TRUE(pose.hasMatch());
+  const auto m = [&](int k) { return pose.captured(k).toDouble(); };
   const TrajectoryPoint& first = doc.results().process->points.front();
-  EXPECT_NEAR(std::stod(m[1]), first.position.x(), 0.01);
-  EXPECT_NEAR(std::stod(m[2]), first.position.y(), 0.01);
-  EXPECT_NEAR(std::stod(m[3]), first.position.z(), 0.01);
+  EXPECT_NEAR(m(1), first.position.x(), 0.01);
+  EXPECT_NEAR(m(2), first.position.y(), 0.01);
+  EXPECT_NEAR(m(3), first.position.z(), 0.01);
   // WPR: R = Rz(r) Ry(p) Rx(w); its z axis is the torch axis, -build.
   const double deg = kPi / 180.0;
-  const Mat3 R = (Eigen::AngleAxisd(std::stod(m[6]) * deg, Vec3::UnitZ()) *
-                  Eigen::AngleAxisd(std::stod(m[5]) * deg, Vec3::UnitY()) *
-                  Eigen::AngleAxisd(std::stod(m[4]) * deg, Vec3::UnitX()))
+  const Mat3 R = (Eigen::AngleAxisd(m(6) * deg, Vec3::UnitZ()) *
+                  Eigen::AngleAxisd(m(5) * deg, Vec3::UnitY()) * Eigen::AngleAxisd(m(4) * deg, Vec3::UnitX()))
                      .toRotationMatrix();
   EXPECT_LT((R.col(2) - toolFrame(first).linear().col(2)).norm(), 1e-4);
 

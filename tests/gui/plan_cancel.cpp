@@ -103,6 +103,8 @@ TEST(PlanCancel, CancelReturnsAtOnceAndKeepsThePreviousResults)
   EXPECT_TRUE(w.actions().cancelPlan->isEnabled());
   ui::StageProgress* progress = w.planPanel()->progress();
   EXPECT_TRUE(progress->isVisible());
+  EXPECT_TRUE(progress->running());
+  EXPECT_TRUE(progress->cancelButton()->isEnabled());
   // Reports reach the stage bars while the worker runs.
   std::vector<std::pair<double, QString>> reports;
   QObject::connect(w.taskRunner(), &ui::TaskRunner::progressed,
@@ -160,6 +162,8 @@ TEST(PlanCancel, CancelReturnsAtOnceAndKeepsThePreviousResults)
   EXPECT_FALSE(w.planning());
   EXPECT_TRUE(w.actions().plan->isEnabled());
   EXPECT_FALSE(progress->isVisible());
+  EXPECT_FALSE(progress->running());
+  EXPECT_TRUE(progress->text().startsWith("Cancelled")) << progress->text().toStdString();
   EXPECT_TRUE(lastLog(w).contains("cancelled"));
   EXPECT_EQ(doc.revision(), revision);
   EXPECT_EQ(doc.results().field, before.field);  // the very same values, not a recomputation

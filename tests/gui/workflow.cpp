@@ -5,7 +5,6 @@
 // back. Every step asserts on the model and writes a documentation screenshot (docs/screenshots),
 // checked rendered and different from the previous one.
 #include <fstream>
-#include <regex>
 
 #include <QAction>
 #include <QCheckBox>
@@ -13,6 +12,7 @@
 #include <QLabel>
 #include <QPlainTextEdit>
 #include <QPushButton>
+#include <QRegularExpression>
 #include <QSignalSpy>
 #include <QSlider>
 #include <QTabWidget>
@@ -72,23 +72,28 @@ struct TpTarget {
 TpTarget arcStartTarget(const std::string& text)
 {
   TpTarget t;
-  std::smatch start;  // the instruction, not the header comment naming it
-  EXPECT_TRUE(std::regex_search(text, start, std::regex(R"(\d+:\s+Arc Start\[)")));
-  const size_t arc = start.empty() ? 0 : static_cast<size_t>(start.position(0));
-  std::string last;
-  const std::string head = text.substr(0, arc);
-  const std::regex move(R"(L P\[(\d+)\])");
-  for (auto it = std::sregex_iterator(head.begin(), head.end(), move); it != std::sregex_iterator(); ++it)
-    last = (*it)[1];
-  std::smatch m;
-  const std::regex pose(
-      "P\\[" + last +
-      R"(\]\{[\s\S]*?X =\s*(-?[\d.]+)\s*mm,\s*Y =\s*(-?[\d.]+)\s*mm,\s*Z =\s*(-?[\d.]+)\s*mm[\s\S]*?GP2:[\s\S]*?J1=\s*(-?[\d.]+)\s*deg,\s*J2=\s*(-?[\d.]+)\s*deg)");
-  EXPECT_TRUE(std::regex_search(text, m, pose)) << "no P[" << last << "] with GP2 axes";
-  if (m.empty()) return t;
-  t.xyz = Vec3(std::stod(m[1]), std::stod(m[2]), std::stod(m[3]));
-  t.e1 = std::stod(m[4]);
-  t.e2 = std::stod(m[5]);
+  const QString all = QString::fromStdString(text);
+  // The instruction, not the header comment naming it.
+  const QRegularExpressionMatch start =
+      QRegularExpression(QStringLiteral(R"(\d+:\s+Arc Start\[)")).match(all);
+  EXPECT_TRUE(start.hasMatch());
+  const int arc = start.hasMatch() ? start.capturedStart(0) : 0;
+  QString last;
+  QRegularExpressionMatchIterator moves =
+      QRegularExpression(QStringLiteral(R"(L P\[(\d+)\])")).globalMatch(all.left(arc));
+  while (moves.hasNext()) last = moves.next().captured(1);
+  const QRegularExpressionMatch m =
+      QRegularExpression(
+          QStringLiteral("P\\[") + last +
+          QStringLiteral(
+              R"(\]\{[\s\S]*?X =\s*(-?[\d.]+)\s*mm,\s*Y =\s*(-?[\d.]+)\s*mm,\s*Z =\s*(-?[\d.]+)\s*mm[\s\S]*?GP2:[\s\S]*?J1=\s*(-?[\d.]+)\s*deg,\s*J2=\s*(-?[\d.]+)\s*deg)"))
+          .match(all);
+  EXPECT_TRUE(m.hasMatch()) << "no P[" << last.toStdString() << "] with GP2 axes";
+  if (!m.hasMatch()) return t;
+  const auto num = [&](int k) { return m.captured(k).toDouble(); };
+  t.xyz = Vec3(num(1), num(2), num(3));
+  t.e1 = num(4);
+  t.e2 = num(5);
   return t;
 }
 

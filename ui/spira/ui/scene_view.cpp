@@ -404,11 +404,20 @@ void SceneView::scheduleRender()
 {
   // Several changes usually arrive together (part, plate, camera): render once for all of them,
   // which matters on million-triangle parts and software OpenGL.
+  // A real timer, not a queued call (which QTimer::singleShot(0) is): queued calls run back to
+  // back with the other posted events (a relayout, the results' panels), and the frame would add
+  // to their stall; a timer fires on a later pass of the event loop, after input and other timers.
   if (renderPending_) return;
   renderPending_ = true;
-  QTimer::singleShot(0, this, [this] {
-    if (renderPending_) render();
-  });
+  if (!renderTimer_) {
+    renderTimer_ = new QTimer(this);
+    renderTimer_->setSingleShot(true);
+    renderTimer_->setInterval(1);
+    connect(renderTimer_, &QTimer::timeout, this, [this] {
+      if (renderPending_) render();
+    });
+  }
+  renderTimer_->start();
 }
 
 void SceneView::render()

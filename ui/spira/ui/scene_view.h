@@ -8,6 +8,7 @@
 
 #include "spira/base/transform.h"
 
+class QTimer;
 class QVTKOpenGLNativeWidget;
 class vtkRenderer;
 
@@ -85,6 +86,7 @@ class SceneView : public QWidget {
   void updateSubstrate();
   void applyPartStyle();
   bool renderPending_ = false;
+  QTimer* renderTimer_ = nullptr;
   std::unique_ptr<Scene> scene_;
   QVTKOpenGLNativeWidget* vtkWidget_ = nullptr;
 };

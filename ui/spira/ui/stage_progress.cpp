@@ -1,5 +1,7 @@
 #include "spira/ui/stage_progress.h"
 
+#include "spira/ui/status_line.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -17,9 +19,8 @@ StageProgress::StageProgress(QWidget* parent) : QWidget(parent)
   auto* grid = new QGridLayout(this);
   grid->setContentsMargins(0, 4, 0, 0);
   grid->setVerticalSpacing(2);
-  what_ = new QLabel(this);
+  what_ = new StatusLine(this);
   what_->setObjectName(QStringLiteral("stageText"));
-  what_->setWordWrap(true);
   grid->addWidget(what_, 0, 0, 1, 2);
   const auto& spans = planStageSpans();
   for (int i = 0; i < kPlanStageCount; ++i) {
@@ -42,11 +43,29 @@ StageProgress::StageProgress(QWidget* parent) : QWidget(parent)
 
 void StageProgress::start()
 {
+  running_ = true;
   current_ = 0;
   for (QProgressBar* b : bars_) b->setValue(0);
   what_->setText(tr("Starting..."));
+  highlightStage(0);
   cancel_->setEnabled(true);
   show();
+}
+
+QString StageProgress::text() const
+{
+  return what_->text();
+}
+
+void StageProgress::highlightStage(int stage)
+{
+  if (stage == highlighted_) return;
+  highlighted_ = stage;
+  for (int i = 0; i < kPlanStageCount; ++i) {
+    QPalette p = palette();
+    if (i == stage) p.setColor(QPalette::WindowText, p.color(QPalette::Highlight));
+    labels_[static_cast<size_t>(i)]->setPalette(p);
+  }
 }
 
 void StageProgress::setProgress(double fraction, const QString& what)
@@ -57,17 +76,17 @@ void StageProgress::setProgress(double fraction, const QString& what)
     const PlanStageSpan& s = spans[static_cast<size_t>(i)];
     const double within = std::clamp((fraction - s.begin) / (s.end - s.begin), 0.0, 1.0);
     bars_[i]->setValue(i < current_ ? 100 : i > current_ ? 0 : static_cast<int>(std::floor(100.0 * within)));
-    // A font change relayouts the whole window (10-17 ms on a busy machine): only when the stage moves on.
-    if (labels_[i]->font().bold() == (i == current_)) continue;
-    QFont f = labels_[i]->font();
-    f.setBold(i == current_);
-    labels_[i]->setFont(f);
   }
+  highlightStage(current_);
   if (!what.isEmpty()) what_->setText(what.left(1).toUpper() + what.mid(1) + QStringLiteral("..."));
 }
 
-void StageProgress::stop()
+void StageProgress::stop(const QString& outcome)
 {
+  running_ = false;
+  cancel_->setEnabled(false);
+  highlightStage(-1);
+  what_->setText(outcome);
   hide();
 }
 

@@ -12,8 +12,12 @@ class QPushButton;
 
 namespace spira::ui {
 
+class StatusLine;
+
 // The progress of a running plan, one bar per stage (field, closure point, generatrices, spiral,
 // process) with the job's own words on what it is doing, and a Cancel button. Hidden when idle.
+// Nothing it shows while a plan runs changes its size, so progress never relays the window out
+// (the current stage is coloured, not bold; the text is a StatusLine).
 class StageProgress : public QWidget {
   Q_OBJECT
 
@@ -24,8 +28,11 @@ class StageProgress : public QWidget {
   void start();
   // The job reported `fraction` of the whole plan (see planStageSpans) while doing `what`.
   void setProgress(double fraction, const QString& what);
-  // Hides the widget.
-  void stop();
+  // Idle again: hides the widget; `outcome` says how the plan ended (text()).
+  void stop(const QString& outcome);
+
+  bool running() const { return running_; }
+  QString text() const;
 
   int currentStage() const { return current_; }
   // Percent shown by the bar of `stage` (0..100).
@@ -38,9 +45,13 @@ class StageProgress : public QWidget {
  private:
   std::array<QLabel*, kPlanStageCount> labels_{};
   std::array<QProgressBar*, kPlanStageCount> bars_{};
-  QLabel* what_ = nullptr;
+  void highlightStage(int stage);
+
+  StatusLine* what_ = nullptr;
   QPushButton* cancel_ = nullptr;
   int current_ = 0;
+  int highlighted_ = -1;
+  bool running_ = false;
 };
 
 }  // namespace spira::ui
