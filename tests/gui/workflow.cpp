@@ -37,11 +37,13 @@
 #include "spira/ui/joint_chart.h"
 #include "spira/ui/main_window.h"
 #include "spira/ui/path_inspector.h"
+#include "spira/ui/plan_panel.h"
 #include "spira/ui/point_selection.h"
 #include "spira/ui/process_chart.h"
 #include "spira/ui/scene_view.h"
 #include "spira/ui/simulation_panel.h"
 #include "spira/ui/spiral_layer.h"
+#include "spira/ui/stage_progress.h"
 #include "support/gui_test_support.h"
 #include "support/test_support.h"
 
@@ -116,6 +118,16 @@ TEST(Workflow, DomeWithFanucCellFromImportToExport)
   // 3. Plan.
   ASSERT_TRUE(planAndWait(w));
   ASSERT_TRUE(doc.results().process) << w.lastErrorMessage().toStdString();
+  // Planning again shows the stage bars without growing the window: a resize relays out and
+  // repaints the whole window, 80 ms on software OpenGL.
+  const QSize size = w.size();
+  QSignalSpy again(&w, &MainWindow::planFinished);
+  w.actions().plan->trigger();
+  EXPECT_TRUE(w.planPanel()->progress()->isVisible());
+  QTest::qWait(50);
+  EXPECT_EQ(w.size(), size);
+  ASSERT_TRUE(waitFor([&] { return again.count() > 0; }, 120000));
+  EXPECT_EQ(w.size(), size);
   const Trajectory& path = *doc.results().process;
   const QImage planned = shoot(w, "workflow-planned.png", nullptr);
 

@@ -160,6 +160,13 @@ Actions Actions::create(QMainWindow* w, const QList<QAction*>& panelToggles)
   viewBar->addSeparator();
   viewBar->addAction(a.showEdges);
   viewBar->addAction(a.showBoundingBox);
+  // The buttons keep their size when an action is enabled, disabled or renamed (the undo steps):
+  // a tool button whose size may change asks the whole window to lay itself out again on each
+  // such change (up to 50 ms with the cell docks open). Their texts are short and fixed.
+  for (QToolBar* toolBar : {tools, viewBar})
+    for (QAction* action : toolBar->actions())
+      if (QWidget* button = toolBar->widgetForAction(action); button && !action->isSeparator())
+        button->setFixedSize(button->sizeHint());
   return a;
 }
 

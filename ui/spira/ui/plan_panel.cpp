@@ -6,6 +6,7 @@
 #include <QLabel>
 #include <QLocale>
 #include <QScrollArea>
+#include <QStackedWidget>
 #include <QTabWidget>
 #include <QToolButton>
 #include <QVBoxLayout>
@@ -120,14 +121,24 @@ PlanPanel::PlanPanel(Document& doc, const PluginRegistry& registry, QWidget* par
   planButton_->setFont(f);
   layout->addWidget(planButton_);
 
-  progress_ = new StageProgress(body);
-  layout->addWidget(progress_);
-  verdict_ = new QLabel(body);
+  // The stage bars take the verdict's place while a plan runs. One stack holds both, so its size
+  // does not change when they swap: showing the bars below the verdict pushed the window taller
+  // (a resize, relayout and repaint of everything: 80 ms on software OpenGL).
+  status_ = new QStackedWidget(body);
+  status_->setObjectName(QStringLiteral("planStatus"));
+  verdict_ = new QLabel(status_);
   verdict_->setObjectName(QStringLiteral("planVerdict"));
   verdict_->setWordWrap(true);
   verdict_->setTextFormat(Qt::RichText);
   verdict_->setMargin(6);
-  layout->addWidget(verdict_);
+  verdict_->setAlignment(Qt::AlignLeft | Qt::AlignTop);
+  progress_ = new StageProgress(status_);
+  status_->addWidget(verdict_);
+  status_->addWidget(progress_);
+  connect(progress_, &StageProgress::runningChanged, this, [this](bool running) {
+    status_->setCurrentWidget(running ? static_cast<QWidget*>(progress_) : verdict_);
+  });
+  layout->addWidget(status_);
   setWidget(body);
 
   subscription_ = doc_.subscribe([this](const ChangeSet& c) { onDocumentChanged(c); });
@@ -143,7 +154,15 @@ PlanPanel::~PlanPanel()
 
 void PlanPanel::setPlanAction(QAction* plan)
 {
-  planButton_->setDefaultAction(plan);
+  // Not setDefaultAction: a tool button re-reads the whole action on every change and asks the
+  // window to lay itself out again, which on the busy cell layout costs 50 ms each time Plan is
+  // enabled or disabled. Only the enabled state changes while the window lives.
+  planButton_->setText(plan->iconText());
+  planButton_->setIcon(plan->icon());
+  planButton_->setToolTip(plan->toolTip());
+  planButton_->setEnabled(plan->isEnabled());
+  connect(planButton_, &QToolButton::clicked, plan, &QAction::trigger);
+  connect(plan, &QAction::changed, planButton_, [this, plan] { planButton_->setEnabled(plan->isEnabled()); });
 }
 
 ParamPanel* PlanPanel::panel(const std::string& section) const

@@ -10,6 +10,7 @@
 class QAction;
 class QComboBox;
 class QLabel;
+class QStackedWidget;
 class QTabWidget;
 class QToolButton;
 class QVBoxLayout;
@@ -72,6 +73,7 @@ class PlanPanel : public QDockWidget {
   QToolButton* planButton_ = nullptr;
   StageProgress* progress_ = nullptr;
   QLabel* verdict_ = nullptr;
+  QStackedWidget* status_ = nullptr;
 };
 
 }  // namespace spira::ui

@@ -38,7 +38,6 @@ StageProgress::StageProgress(QWidget* parent) : QWidget(parent)
   connect(cancel_, &QPushButton::clicked, this, &StageProgress::cancelRequested);
   grid->addWidget(cancel_, kPlanStageCount + 1, 1, Qt::AlignRight);
   grid->setColumnStretch(1, 1);
-  hide();
 }
 
 void StageProgress::start()
@@ -49,7 +48,7 @@ void StageProgress::start()
   what_->setText(tr("Starting..."));
   highlightStage(0);
   cancel_->setEnabled(true);
-  show();
+  emit runningChanged(true);
 }
 
 QString StageProgress::text() const
@@ -87,7 +86,7 @@ void StageProgress::stop(const QString& outcome)
   cancel_->setEnabled(false);
   highlightStage(-1);
   what_->setText(outcome);
-  hide();
+  emit runningChanged(false);
 }
 
 int StageProgress::stagePercent(int stage) const

@@ -15,20 +15,21 @@ namespace spira::ui {
 class StatusLine;
 
 // The progress of a running plan, one bar per stage (field, closure point, generatrices, spiral,
-// process) with the job's own words on what it is doing, and a Cancel button. Hidden when idle.
-// Nothing it shows while a plan runs changes its size, so progress never relays the window out
-// (the current stage is coloured, not bold; the text is a StatusLine).
+// process) with the job's own words on what it is doing, and a Cancel button. Whoever holds it
+// shows it while runningChanged(true). Nothing it shows while a plan runs changes its size, so
+// progress never relays the window out (the current stage is coloured, not bold; the text is a
+// StatusLine).
 class StageProgress : public QWidget {
   Q_OBJECT
 
  public:
   explicit StageProgress(QWidget* parent = nullptr);
 
-  // Resets every bar and shows the widget.
+  // Resets every bar and enables Cancel.
   void start();
   // The job reported `fraction` of the whole plan (see planStageSpans) while doing `what`.
   void setProgress(double fraction, const QString& what);
-  // Idle again: hides the widget; `outcome` says how the plan ended (text()).
+  // Idle again; `outcome` says how the plan ended (text()).
   void stop(const QString& outcome);
 
   bool running() const { return running_; }
@@ -41,6 +42,7 @@ class StageProgress : public QWidget {
 
  signals:
   void cancelRequested();
+  void runningChanged(bool running);
 
  private:
   std::array<QLabel*, kPlanStageCount> labels_{};
