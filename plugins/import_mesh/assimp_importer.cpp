@@ -5,8 +5,8 @@
 #include <assimp/Importer.hpp>
 #include <assimp/ProgressHandler.hpp>
 
-#include "assimp_scene.h"
 #include "spira/base/error.h"
+#include "spira/io/assimp_scene.h"
 #include "unit_parameter.h"
 
 namespace spira::import_mesh {

@@ -15,18 +15,26 @@ namespace spira::ui {
 
 namespace {
 
+// One message per point, "Point i (revolution r): " and what is wrong there.
 struct Lister {
   LogPanel& log;
   QListWidget& list;
+  const Trajectory& path;
   int role;
   int maxPerKind;
 
-  void operator()(const std::vector<size_t>& points, const std::function<QString(size_t)>& message,
+  void operator()(const std::vector<size_t>& points, const std::function<QString(size_t)>& what,
                   const QString& rest) const
   {
+    const QLocale loc;
     const size_t listed = std::min(points.size(), static_cast<size_t>(maxPerKind));
     for (size_t k = 0; k < listed; ++k) {
-      log.warning(message(points[k]), QObject::tr("Click this message to select the point."));
+      const size_t i = points[k];
+      const QString message = QObject::tr("Point %1 (revolution %2): %3")
+                                  .arg(loc.toString(static_cast<qulonglong>(i)))
+                                  .arg(path.points[i].revolution + 1)
+                                  .arg(what(i));
+      log.warning(message, QObject::tr("Click this message to select the point."));
       list.item(list.count() - 1)->setData(role, static_cast<long long>(points[k]));
     }
     if (points.size() > listed)
@@ -40,9 +48,9 @@ void listOffendingPoints(LogPanel& log, QListWidget& list, const Results& result
                          int maxPerKind)
 {
   if (!results.process) return;
-  const Lister lister{log, list, pointRole, maxPerKind};
-  const QLocale loc;
   const Trajectory& path = *results.process;
+  const Lister lister{log, list, path, pointRole, maxPerKind};
+  const QLocale loc;
   if (const std::optional<PlanWindow> window = planWindow(results)) {
     std::vector<size_t> outside;
     for (size_t i = 0; i < path.size(); ++i)
@@ -50,12 +58,8 @@ void listOffendingPoints(LogPanel& log, QListWidget& list, const Results& result
     lister(
         outside,
         [&](size_t i) {
-          const TrajectoryPoint& p = path.points[i];
-          return QObject::tr(
-                     "Point %1 (revolution %2): deposit height %3 mm is outside the window %4 .. %5 mm.")
-              .arg(loc.toString(static_cast<qulonglong>(i)))
-              .arg(p.revolution + 1)
-              .arg(loc.toString(p.height, 'f', 3), loc.toString(window->hMin, 'f', 2),
+          return QObject::tr("deposit height %1 mm is outside the window %2 .. %3 mm.")
+              .arg(loc.toString(path.points[i].height, 'f', 3), loc.toString(window->hMin, 'f', 2),
                    loc.toString(window->hMax, 'f', 2));
         },
         QObject::tr("... and %1 more point(s) outside the window (see the process chart's magenta dots)."));
@@ -72,31 +76,18 @@ void listOffendingPoints(LogPanel& log, QListWidget& list, const Results& result
       beyondLimit.push_back(i);
     if (c.collision) colliding.push_back(i);
   }
-  const auto revolution = [&](size_t i) { return path.points[i].revolution + 1; };
   lister(
-      unreachable,
-      [&](size_t i) {
-        return QObject::tr("Point %1 (revolution %2): the robot cannot reach it.")
-            .arg(loc.toString(static_cast<qulonglong>(i)))
-            .arg(revolution(i));
-      },
+      unreachable, [](size_t) { return QObject::tr("the robot cannot reach it."); },
       QObject::tr("... and %1 more point(s) out of reach (red on the spiral)."));
   lister(
       beyondLimit,
       [&](size_t i) {
-        return QObject::tr("Point %1 (revolution %2): an axis is %3 deg beyond its limit.")
-            .arg(loc.toString(static_cast<qulonglong>(i)))
-            .arg(revolution(i))
+        return QObject::tr("an axis is %1 deg beyond its limit.")
             .arg(loc.toString(-k->checks[i].limitMarginDeg, 'f', 1));
       },
       QObject::tr("... and %1 more point(s) beyond an axis limit (see the joint chart)."));
   lister(
-      colliding,
-      [&](size_t i) {
-        return QObject::tr("Point %1 (revolution %2): the torch or a robot link collides there.")
-            .arg(loc.toString(static_cast<qulonglong>(i)))
-            .arg(revolution(i));
-      },
+      colliding, [](size_t) { return QObject::tr("the torch or a robot link collides there."); },
       QObject::tr("... and %1 more colliding point(s) (red on the spiral)."));
 }
 

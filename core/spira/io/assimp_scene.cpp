@@ -1,8 +1,8 @@
-#include "assimp_scene.h"
+#include "spira/io/assimp_scene.h"
 
 #include <assimp/scene.h>
 
-namespace spira::import_mesh {
+namespace spira {
 namespace {
 
 void appendMesh(const aiMesh& m, const aiMatrix4x4& T, SceneTriangles& out)
@@ -53,4 +53,4 @@ SceneTriangles collectSceneTriangles(const aiScene& scene)
   return out;
 }
 
-}  // namespace spira::import_mesh
+}  // namespace spira
