@@ -34,7 +34,9 @@ TaskRunner::TaskRunner(QWidget* dialogParent, QObject* parent)
     : QObject(parent), dialogParent_(dialogParent), poll_(new QTimer(this)), grace_(new QTimer(this))
 {
   qRegisterMetaType<TaskOutcome>();
-  poll_->setInterval(50);
+  // 10 Hz: each report repaints the progress, and with the OpenGL views in the window a repaint
+  // composes the whole window (10-30 ms on software OpenGL).
+  poll_->setInterval(100);
   connect(poll_, &QTimer::timeout, this, &TaskRunner::pollProgress);
   grace_->setSingleShot(true);
   grace_->setInterval(kCancelGraceMs);
@@ -112,6 +114,8 @@ bool TaskRunner::start(const QString& title, Job job, Done done, Display display
     dialog_->setValue(0);
     connect(dialog_, &QProgressDialog::canceled, this, &TaskRunner::cancel);
   }
+  lastFraction_ = -1.0;
+  lastStage_.clear();
   poll_->start();
   thread->start();
   emit started();
@@ -138,6 +142,9 @@ void TaskRunner::pollProgress()
   }
   if (shared_->progress.cancelled()) return;
   fraction = std::clamp(fraction, 0.0, 1.0);
+  if (fraction == lastFraction_ && stage == lastStage_) return;  // nothing new to repaint
+  lastFraction_ = fraction;
+  lastStage_ = stage;
   emit progressed(fraction, QString::fromStdString(stage));
   if (!dialog_) return;
   dialog_->setValue(static_cast<int>(1000.0 * fraction));

@@ -2,6 +2,7 @@
 
 #include <functional>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include <QMetaType>
@@ -87,6 +88,8 @@ class TaskRunner : public QObject {
   QTimer* grace_;
   Done done_;
   QString title_;
+  double lastFraction_ = -1.0;  // last progress emitted
+  std::string lastStage_;
 };
 
 }  // namespace spira::ui
