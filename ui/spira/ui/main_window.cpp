@@ -15,6 +15,7 @@
 #include <QTimer>
 #include <QUrl>
 
+#include <vtkPolyData.h>
 #include <vtkVersion.h>
 
 #include "builtin_plugins.h"
@@ -251,7 +252,8 @@ void MainWindow::refreshScene(bool partChanged)
     if (!part || !part->mesh) {
       view_->showPart(nullptr);
     } else if (part->T_world_part.isApprox(Transform::Identity())) {
-      view_->showPart(part->mesh.get());
+      const bool prepared = preparedSurface_.first == part->mesh;
+      view_->showPart(part->mesh.get(), prepared ? preparedSurface_.second : nullptr);
     } else {
       const TriangleMesh placed = part->mesh->transformed(part->T_world_part);
       view_->showPart(&placed);

@@ -2,7 +2,9 @@
 
 #include <memory>
 #include <optional>
+#include <utility>
 
+#include <vtkSmartPointer.h>
 #include <QImage>
 #include <QMainWindow>
 
@@ -11,6 +13,7 @@
 #include "spira/ui/actions.h"
 
 class QLabel;
+class vtkPolyData;
 
 namespace spira::ui {
 
@@ -161,6 +164,9 @@ class MainWindow : public QMainWindow {
   std::shared_ptr<const TriangleMesh> reportMesh_;
   std::optional<MeshReport> report_;
   std::shared_ptr<const Part> shownPart_;
+  // The 3D view's surface of the last imported mesh, built by the import job (the mesh is
+  // immutable, so it stays right for that mesh, also after an undo back to it).
+  std::pair<std::shared_ptr<const TriangleMesh>, vtkSmartPointer<vtkPolyData>> preparedSurface_;
   QString lastError_;
   QString lastHint_;
 };

@@ -11,6 +11,8 @@
 #include <QSettings>
 #include <QStandardPaths>
 
+#include <vtkPolyData.h>
+
 #include "builtin_plugins.h"
 #include "spira/base/error.h"
 #include "spira/document/project_file.h"
@@ -19,6 +21,7 @@
 #include "spira/ui/main_window.h"
 #include "spira/ui/recent_files.h"
 #include "spira/ui/task_runner.h"
+#include "spira/ui/vtk_mesh.h"
 
 namespace spira::ui {
 
@@ -94,14 +97,18 @@ void MainWindow::importPartFile(const QString& path)
   }
   const PluginRegistry& registry = builtinRegistry();
   auto result = std::make_shared<ImportedPart>();
+  auto shaded = std::make_shared<vtkSmartPointer<vtkPolyData>>();
   const std::filesystem::path file = toPath(path);
   log_->info(tr("Importing %1 ...").arg(QDir::toNativeSeparators(path)));
   tasks_->start(
       tr("Importing %1").arg(QFileInfo(path).fileName()),
-      [&registry, result, file](Progress& progress) {
+      [&registry, result, shaded, file](Progress& progress) {
         *result = importPart(registry, file, nullptr, progress);
+        // The view's surface too: its normals are the costly part of showing a large part.
+        progress.report(1.0, "preparing the view");
+        *shaded = toShadedPolyData(result->mesh);
       },
-      [this, path, result](const TaskOutcome& outcome) {
+      [this, path, result, shaded](const TaskOutcome& outcome) {
         if (outcome.status == TaskOutcome::Status::Cancelled) {
           log_->info(
               tr("Import of %1 cancelled; the document is unchanged.").arg(QFileInfo(path).fileName()));
@@ -122,6 +129,7 @@ void MainWindow::importPartFile(const QString& path)
         // Hand the import's own validation to the views so they need not redo it.
         reportMesh_ = mesh;
         report_ = result->report;
+        preparedSurface_ = {mesh, *shaded};
         logImported(log_, path, *result);
         const Substrate& s = *doc_.substrate();
         const BoundingBox box = result->report.bounds;

@@ -269,12 +269,12 @@ void SceneView::applyPartStyle()
   s.field->setVisible(style == PartStyle::Field);
 }
 
-void SceneView::showPart(const TriangleMesh* mesh)
+void SceneView::showPart(const TriangleMesh* mesh, vtkSmartPointer<vtkPolyData> shaded)
 {
   Scene& s = *scene_;
   Bounds bounds{1, -1, 1, -1, 1, -1};
   if (mesh && !mesh->empty()) {
-    vtkSmartPointer<vtkPolyData> poly = toShadedPolyData(*mesh);
+    vtkSmartPointer<vtkPolyData> poly = shaded ? shaded : toShadedPolyData(*mesh);
     poly->GetBounds(bounds.data());
     s.partMapper->SetInputData(poly);
     s.field->setSurface(poly);
@@ -406,13 +406,15 @@ void SceneView::scheduleRender()
   // which matters on million-triangle parts and software OpenGL.
   // A real timer, not a queued call (which QTimer::singleShot(0) is): queued calls run back to
   // back with the other posted events (a relayout, the results' panels), and the frame would add
-  // to their stall; a timer fires on a later pass of the event loop, after input and other timers.
+  // to their stall. 10 ms later the event loop has taken the input and timers that waited behind
+  // the change (new results take 20-40 ms to reach the panels) before the frame blocks it again.
+  constexpr int kRenderDelayMs = 10;
   if (renderPending_) return;
   renderPending_ = true;
   if (!renderTimer_) {
     renderTimer_ = new QTimer(this);
     renderTimer_->setSingleShot(true);
-    renderTimer_->setInterval(1);
+    renderTimer_->setInterval(kRenderDelayMs);
     connect(renderTimer_, &QTimer::timeout, this, [this] {
       if (renderPending_) render();
     });
