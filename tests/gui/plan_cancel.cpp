@@ -163,7 +163,6 @@ TEST(PlanCancel, CancelReturnsAtOnceAndKeepsThePreviousResults)
   EXPECT_TRUE(w.actions().plan->isEnabled());
   EXPECT_FALSE(progress->isVisible());
   EXPECT_FALSE(progress->running());
-  EXPECT_TRUE(progress->text().startsWith("Cancelled")) << progress->text().toStdString();
   EXPECT_TRUE(lastLog(w).contains("cancelled"));
   EXPECT_EQ(doc.revision(), revision);
   EXPECT_EQ(doc.results().field, before.field);  // the very same values, not a recomputation

@@ -74,15 +74,12 @@ void MainWindow::finishPlan(const TaskOutcome& outcome, const DocumentState& sna
   planning_ = false;
   actions_.plan->setEnabled(true);
   actions_.cancelPlan->setEnabled(false);
-  StageProgress* progress = planPanel_->progress();
+  planPanel_->progress()->stop();
   if (outcome.status == TaskOutcome::Status::Cancelled) {
-    progress->stop(tr("Cancelled: the previous results are unchanged"));
     log_->info(tr("Planning cancelled; the previous results are unchanged."));
   } else if (!outcome.succeeded()) {
-    progress->stop(tr("Failed: see the Messages panel"));
     reportError(tr("Planning failed"), outcome.message, outcome.hint);
   } else {
-    progress->stop(tr("Planned in %1 s").arg(QLocale().toString(result.seconds, 'f', 2)));
     for (const std::string& w : result.warnings) log_->warning(fromStd(w));
     const std::optional<Stage> dropped = storePlanResults(doc_, snapshot, result.results);
     if (dropped && *dropped == Stage::Field) {

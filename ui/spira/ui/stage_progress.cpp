@@ -1,7 +1,5 @@
 #include "spira/ui/stage_progress.h"
 
-#include "spira/ui/status_line.h"
-
 #include <algorithm>
 #include <cmath>
 
@@ -10,6 +8,8 @@
 #include <QProgressBar>
 #include <QPushButton>
 #include <QStyle>
+
+#include "spira/ui/status_line.h"
 
 namespace spira::ui {
 
@@ -51,11 +51,6 @@ void StageProgress::start()
   emit runningChanged(true);
 }
 
-QString StageProgress::text() const
-{
-  return what_->text();
-}
-
 void StageProgress::highlightStage(int stage)
 {
   if (stage == highlighted_) return;
@@ -80,12 +75,11 @@ void StageProgress::setProgress(double fraction, const QString& what)
   if (!what.isEmpty()) what_->setText(what.left(1).toUpper() + what.mid(1) + QStringLiteral("..."));
 }
 
-void StageProgress::stop(const QString& outcome)
+void StageProgress::stop()
 {
   running_ = false;
   cancel_->setEnabled(false);
   highlightStage(-1);
-  what_->setText(outcome);
   emit runningChanged(false);
 }
 

@@ -29,11 +29,10 @@ class StageProgress : public QWidget {
   void start();
   // The job reported `fraction` of the whole plan (see planStageSpans) while doing `what`.
   void setProgress(double fraction, const QString& what);
-  // Idle again; `outcome` says how the plan ended (text()).
-  void stop(const QString& outcome);
+  // Idle again.
+  void stop();
 
   bool running() const { return running_; }
-  QString text() const;
 
   int currentStage() const { return current_; }
   // Percent shown by the bar of `stage` (0..100).
