@@ -1,8 +1,10 @@
+#include <algorithm>
 #include <iomanip>
 #include <iostream>
 
 #include "builtin_plugins.h"
 #include "cli_common.h"
+#include "part_placement.h"
 #include "part_loading.h"
 #include "spira/base/atomic_file.h"
 #include "spira/planning/plan_schemas.h"
@@ -61,40 +63,42 @@ int cmdCompare(const std::vector<std::string>& argv)
   targets.insert(targets.end(), importFlags.targets().begin(), importFlags.targets().end());
   if (args.takeSwitch("--help")) {
     std::cout
-        << "usage: spira-cli compare PART -o DIR [--lower-loop N] [--substrate-z Z] [parameter flags]\n\n"
+        << "usage: spira-cli compare PART -o DIR [--lower-loop N] [--substrate-z Z] [--drop] [parameter flags]\n\n"
            "Plans PART with every decomposition strategy in the same process window, slices it\n"
            "with horizontal planes every h as the 2.5D reference (each point's deposit is its\n"
            "distance to the layer below; the upper edge is the last layer), and writes\n"
            "DIR/compare.json (per strategy: feasible or why it failed, generatrix lengths,\n"
            "deposit min/max/mean, points outside the window, revolutions, runtime) and\n"
            "DIR/compare.csv (strategy,x,y,z,height per point). A strategy that fails is listed,\n"
-           "not an error.\n"
-        << paramFlagsHelp(targets);
+           "not an error; exit code 4 when no strategy plans the part feasibly.\n\n"
+        << kPlacementHelp << paramFlagsHelp(targets);
     return kOk;
   }
   const std::string outDir = args.takeOption("-o");
-  const std::string lowerLoop = args.takeOption("--lower-loop");
-  const std::string substrateZ = args.takeOption("--substrate-z");
+  const PartPlacement placement = PartPlacement::take(args);
   args.rest = consumeParamFlags(args.rest, targets);
   const auto positional = args.finish("compare", 1, 1);
   if (outDir.empty()) throw UsageError("'compare' needs an output folder", "write -o DIR");
   ensureWritableDirectory(outDir);
 
   NullProgress progress;
-  const ImportedPart part = importFlags.import(positional[0], progress);
+  ImportedPart part = importFlags.import(positional[0], progress);
+  for (const auto& w : part.warnings) std::cerr << "warning: " << w << "\n";
+  placement.apply(part);
   PlanRequest request{part.mesh, part.report};
-  try {
-    request.lowerLoopOverride = lowerLoop.empty() ? -1 : std::stoi(lowerLoop);
-    request.substrateZ = substrateZ.empty() ? 0.0 : std::stod(substrateZ);
-  } catch (const std::exception&) {
-    throw UsageError("--lower-loop and --substrate-z take numbers", "e.g. --lower-loop 0 --substrate-z 0");
-  }
+  request.lowerLoopOverride = placement.lowerLoop;
+  request.substrateZ = placement.substrateZ;
   request.params = flags.values;
   const Comparison comparison = compareStrategies(registry, request, progress);
   writeComparisonFiles(comparison, outDir);
   printTable(comparison, std::cout);
   std::cout << "wrote " << outDir << "/compare.json and compare.csv\n";
-  return kOk;
+  const bool anyFeasible = std::any_of(comparison.strategies.begin(), comparison.strategies.end(),
+                                       [](const StrategyOutcome& s) { return s.kind == "ctpp" && s.feasible; });
+  if (!anyFeasible)
+    std::cerr << "no strategy plans this part feasibly: see each strategy's failure above and 'spira-cli "
+                 "plan PART --strategy S' for the points the deposit check rejects\n";
+  return anyFeasible ? kOk : kInfeasible;
 }
 
 }  // namespace spira::cli

@@ -142,6 +142,16 @@ int writeCsv(const ExportSource& source, const std::optional<RobotCell>& cell, c
   return kOk;
 }
 
+// What the plan's deposit check said, as the plan wrote it in its report.
+std::string planSummary(const nlohmann::json& report)
+{
+  if (report.contains("deposit_check") && report["deposit_check"].is_object()) {
+    const nlohmann::json& d = report["deposit_check"];
+    if (d.contains("summary") && d["summary"].is_string()) return d["summary"].get<std::string>();
+  }
+  return "its report says it is not feasible";
+}
+
 }  // namespace
 
 int cmdExport(const std::vector<std::string>& argv)
@@ -196,6 +206,14 @@ int cmdExport(const std::vector<std::string>& argv)
                   : std::nullopt;
   if (cell && !cell->canSolve()) throw InputError(cell->ikRefusal(), "choose a cell with a 6-axis arm");
   if (csv) return writeCsv(source, cell, outDir);
+  const bool forced = exporterValues.has("force") && exporterValues.getBool("force");
+  const nlohmann::json& r = source.report;
+  const bool infeasible = r.is_object() && r.contains("feasible") && r["feasible"].is_boolean() &&
+                          !r["feasible"].get<bool>();
+  if (infeasible && !forced)
+    throw InfeasibleError("the plan is infeasible: " + planSummary(r),
+                          "change the plan (spira-cli plan prints the change that works), or add --force to "
+                          "write the program anyway");
   if (!cell) std::cerr << "note: no cell: the program's targets are torch poses in the part frame\n";
 
   ExportJob job;

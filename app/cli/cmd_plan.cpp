@@ -4,6 +4,7 @@
 
 #include "builtin_plugins.h"
 #include "cli_common.h"
+#include "part_placement.h"
 #include "part_loading.h"
 #include "robot_output.h"
 #include "spira/base/atomic_file.h"
@@ -15,6 +16,7 @@
 #include "spira/planning/joints_csv.h"
 #include "spira/planning/plan_files.h"
 #include "spira/planning/plan_schemas.h"
+#include "spira/planning/plan_advice.h"
 #include "spira/planning/planner.h"
 
 namespace spira::cli {
@@ -60,10 +62,27 @@ void printSummary(const PlanOutput& plan, std::ostream& out)
         << plan.closure.point.z() << ") mm\n";
   out << "travel speed " << plan.process.travelSpeedMin << " .. " << plan.process.travelSpeedMax
       << " mm/s, build time " << plan.process.buildTime / 60.0 << " min\n";
-  out << (plan.feasible() ? "feasible" : "INFEASIBLE") << ": " << s.violations.size()
-      << " deposit(s) outside the window, " << plan.process.violations.size()
+  const DepositCheckReport& d = plan.deposits;
+  out << "deposit check: " << d.pointsChecked << " arc-on points, measured height " << d.heightMin << " .. "
+      << d.heightMax << " mm";
+  if (d.coverageChecked) out << ", " << 100.0 * (1.0 - d.uncoveredFraction()) << " % of the surface covered";
+  out << "\n"
+      << (plan.feasible() ? "feasible" : "INFEASIBLE") << ": " << d.summary() << "; " << s.violations.size()
+      << " planned deposit(s) outside the window, " << plan.process.violations.size()
       << " process-limit violation(s)\n";
   for (const auto& w : plan.warnings) out << "warning: " << w << "\n";
+}
+
+// A part the strategy refuses gets the change that plans it, when one does, in the error's hint.
+PlanOutput planOrAdvise(const PluginRegistry& registry, const PlanRequest& request, Progress& progress)
+{
+  try {
+    return planPart(registry, request, progress);
+  } catch (const InputError& e) {
+    const PlanAdvice advice = adviseChange(registry, request, nullptr, progress, 2);
+    if (!advice.found) throw;
+    throw InputError(e.what(), advice.change + " (" + advice.flags + "): planned and checked feasible");
+  }
 }
 
 }  // namespace
@@ -88,7 +107,7 @@ int cmdPlan(const std::vector<std::string>& argv)
 
   if (help) {
     std::cout
-        << "usage: spira-cli plan PART -o DIR [--strategy isovalue] [--lower-loop N] [--substrate-z Z]\n"
+        << "usage: spira-cli plan PART -o DIR [--strategy isovalue] [--lower-loop N] [--substrate-z Z] [--drop]\n"
            "                       [--cell CELL] [--keep-collisions] [--export krl|fanuc_tp] [--timing]\n"
            "                       [parameter flags]\n\n"
            "Plans one continuous spiral on PART and writes DIR/trajectory.csv and DIR/report.json.\n"
@@ -97,15 +116,16 @@ int cmdPlan(const std::vector<std::string>& argv)
            "(and positioner) joints and writes DIR/joints.csv. With --export, writes the robot program\n"
            "into DIR (the flags of the exporter and of the path preparation are listed with\n"
            "--export FORMAT --help).\n"
-           "Exit code 4 (files still written) when the plan leaves the process window, or a point is\n"
-           "unreachable or collides.\n"
-        << paramFlagsHelp(targets);
+           "The plan is feasible when the deposit check (docs/deposit-check.md) finds every bead of the\n"
+           "path supported inside the process window, no jump with the arc on and the surface covered.\n"
+           "Exit code 4 when it is not, or a point is unreachable or collides: trajectory.csv and\n"
+           "report.json are still written (to inspect), the robot program is not.\n\n"
+        << kPlacementHelp << paramFlagsHelp(targets);
     return kOk;
   }
   const std::string outDir = args.takeOption("-o");
   std::string strategy = args.takeOption("--strategy");
-  const std::string lowerLoop = args.takeOption("--lower-loop");
-  const std::string substrateZ = args.takeOption("--substrate-z");
+  const PartPlacement placement = PartPlacement::take(args);
   const bool timing = args.takeSwitch("--timing");
   const bool keepCollisions = args.takeSwitch("--keep-collisions");
   args.rest = consumeParamFlags(args.rest, targets);
@@ -124,22 +144,33 @@ int cmdPlan(const std::vector<std::string>& argv)
 
   const auto t0 = std::chrono::steady_clock::now();
   NullProgress progress;
-  const ImportedPart part = importFlags.import(positional[0], progress);
+  ImportedPart part = importFlags.import(positional[0], progress);
+  for (const auto& w : part.warnings) std::cerr << "warning: " << w << "\n";
+  const double dropped = placement.apply(part);
+  if (dropped != 0.0)
+    std::cout << "dropped the part " << std::fixed << std::setprecision(3) << dropped
+              << " mm along z onto the substrate (z = " << placement.substrateZ << " mm)\n";
   const double importSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
   PlanRequest req{part.mesh, part.report};
   req.decomposerId = strategy.find('.') == std::string::npos ? "decomposer." + strategy : strategy;
-  try {
-    req.lowerLoopOverride = lowerLoop.empty() ? -1 : std::stoi(lowerLoop);
-    req.substrateZ = substrateZ.empty() ? 0.0 : std::stod(substrateZ);
-  } catch (const std::exception&) {
-    throw UsageError("--lower-loop and --substrate-z take numbers", "e.g. --lower-loop 0 --substrate-z 0");
-  }
+  req.lowerLoopOverride = placement.lowerLoop;
+  req.substrateZ = placement.substrateZ;
   req.params = planFlags.values;
-  PlanOutput plan = planPart(registry, req, progress);
+  PlanOutput plan = planOrAdvise(registry, req, progress);
   plan.timings.insert(plan.timings.begin(), {"import", importSeconds});
 
   nlohmann::json report = planReportJson(plan, strategy);
+  report["dropped_mm"] = dropped;
+  std::optional<PlanAdvice> advice;
+  if (!plan.feasible()) {
+    std::cout << "INFEASIBLE: " << plan.deposits.summary() << "\nlooking for a change that plans it...\n";
+    advice = adviseChange(registry, req, &plan, progress);
+    report["advice"] = {{"found", advice->found},
+                        {"change", advice->change},
+                        {"flags", advice->flags},
+                        {"tried", advice->tried}};
+  }
   bool ok = plan.feasible();
   std::optional<PlanMotion> motion;
   if (cell) {
@@ -164,9 +195,14 @@ int cmdPlan(const std::vector<std::string>& argv)
   if (motion) writeFileAtomically(std::filesystem::path(outDir) / "joints.csv", jointsCsv(motion->joints));
   writeFileAtomically(std::filesystem::path(outDir) / "report.json", report.dump(2) + "\n");
   printSummary(plan, std::cout);
+  if (advice) std::cout << "advice: " << advice->text() << "\n";
   if (motion) printMotionSummary(motion->report, std::cout);
 
-  if (exporter) {
+  const bool forced = exporterValues.has("force") && exporterValues.getBool("force");
+  if (exporter && !plan.feasible() && !forced) {
+    std::cout << "the robot program was not written: the deposit check rejects the path (add --force to "
+                 "write it anyway, each rejected point then carries a warning comment)\n";
+  } else if (exporter) {
     ExportJob job;
     job.exporterId = exporter->id();
     job.exporterParams = exporterValues;

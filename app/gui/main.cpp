@@ -1,6 +1,7 @@
 // spira [FILE]                       open a part or a project
 // spira --recover [FILE]             restore the autosaved work of a session that crashed
-// spira --screenshot IMAGE FILE      render FILE in the main window, write IMAGE, exit
+// spira --screenshot IMAGE [--plan] FILE
+//                                    render FILE in the main window (planned), write IMAGE, exit
 // spira --version | --help
 #include <cstdlib>
 #include <cstring>
@@ -26,7 +27,7 @@ namespace {
 
 constexpr const char* kUsage =
     "Usage: spira [--recover] [FILE]\n"
-    "       spira --screenshot IMAGE FILE\n"
+    "       spira --screenshot IMAGE [--plan] FILE\n"
     "       spira --version | --help\n"
     "\n"
     "Spira plans one continuous spiral deposition path for robotic wire-arc additive manufacturing.\n"
@@ -36,16 +37,20 @@ constexpr const char* kUsage =
     "                          normally, without asking\n"
     "  --screenshot IMAGE FILE open FILE, write the main window to IMAGE (.png, .jpg) and exit;\n"
     "                          runs without a display when xvfb-run is installed\n"
+    "  --plan                  with --screenshot: plan the part first, so the picture shows\n"
+    "                          the planned spiral\n"
     "  --version               print the version and exit\n"
     "  --help                  print this help and exit\n"
     "\n"
-    "Exit codes: 0 success, 1 rendering or writing failed, 2 bad command line, 3 unreadable input.\n";
+    "Exit codes: 0 success, 1 rendering or writing failed, 2 bad command line, 3 unreadable input\n"
+    "or a part that cannot be planned, 4 a plan that is not feasible (the picture is still written).\n";
 
 struct Command {
   bool help = false;
   bool version = false;
   bool recover = false;
   std::string screenshot;  // IMAGE
+  bool plan = false;       // plan the part before the screenshot
   std::string file;
 };
 
@@ -60,6 +65,8 @@ bool parse(int argc, char** argv, Command& cmd, std::string& error)
       cmd.version = true;
     } else if (a == "--recover") {
       cmd.recover = true;
+    } else if (a == "--plan") {
+      cmd.plan = true;
     } else if (a == "--screenshot") {
       if (i + 1 >= argc) {
         error = "--screenshot needs an image file name";
@@ -75,6 +82,10 @@ bool parse(int argc, char** argv, Command& cmd, std::string& error)
       error = "only one file can be opened, got " + cmd.file + " and " + a;
       return false;
     }
+  }
+  if (cmd.plan && cmd.screenshot.empty()) {
+    error = "--plan goes with --screenshot (in the window, press Plan or F5)";
+    return false;
   }
   if (!cmd.screenshot.empty() && cmd.file.empty()) {
     error = "--screenshot needs the part or project to show";
@@ -149,8 +160,11 @@ int main(int argc, char** argv)
 
   if (!cmd.screenshot.empty()) {
     QTextStream err(stderr);
-    return spira::ui::takeScreenshot(
-        {QString::fromLocal8Bit(cmd.file.c_str()), QString::fromLocal8Bit(cmd.screenshot.c_str())}, err);
+    spira::ui::ScreenshotRequest request;
+    request.input = QString::fromLocal8Bit(cmd.file.c_str());
+    request.output = QString::fromLocal8Bit(cmd.screenshot.c_str());
+    request.plan = cmd.plan;
+    return spira::ui::takeScreenshot(request, err);
   }
 
   spira::Document doc;

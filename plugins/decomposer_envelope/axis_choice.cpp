@@ -10,7 +10,7 @@ namespace spira {
 
 namespace {
 
-const std::string kIsovalueHint = "use the iso-value strategy (decomposer.isovalue), which needs no skeleton";
+const std::string kIsovalueHint = "use the iso-value strategy (--strategy isovalue), which needs no skeleton";
 
 }  // namespace
 
@@ -55,7 +55,7 @@ AxisChoice chooseProjectionAxis(const TriangleMesh& mesh, const BoundaryLoop& lo
     throw InputError(
         "the part's skeleton does not rise steadily in z, so there is no single skeleton point "
         "per height to project towards",
-        kIsovalueHint + ", or choose axis = vertical for a part of revolution");
+        kIsovalueHint + ", or --axis vertical for a part of revolution");
   double radius = 0.0;
   for (int v : lower.vertices) {
     const Vec3 d = mesh.vertices[v] - centroid;

@@ -59,7 +59,7 @@ bool canPlan(const DecomposeInput& input, std::string* why)
   };
   if (input.partClass == PartClass::Closed)
     return no(
-        "envelope projection plans open parts only (two free edges); use decomposer.isovalue for "
+        "envelope projection plans open parts only (two free edges); use --strategy isovalue for "
         "closed parts");
   if (input.partClass != PartClass::Open)
     return no("the part is not open: it needs exactly two free edges, one on the substrate and one on top");
@@ -96,7 +96,7 @@ DecomposeResult EnvelopeDecomposer::decompose(const DecomposeInput& input, const
   std::string why;
   if (!canPlan(input, &why))
     throw InputError("decomposer.envelope_projection cannot plan this part: " + why,
-                     "choose the iso-value strategy (decomposer.isovalue)");
+                     "choose the iso-value strategy (--strategy isovalue)");
   const ParamSet values = params.withDefaults(schema_);
   schema_.validate(values);
   EnvelopeOptions options;

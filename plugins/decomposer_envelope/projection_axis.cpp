@@ -44,7 +44,7 @@ ProjectionAxis ProjectionAxis::line(const Vec3& a, const Vec3& b)
 {
   if (a.z() == b.z())
     throw InputError("the projection axis is horizontal, so it gives no point per height",
-                     "use the iso-value strategy (decomposer.isovalue) for this part");
+                     "use the iso-value strategy (--strategy isovalue) for this part");
   ProjectionAxis out;
   out.points_ = a.z() < b.z() ? Polyline{a, b} : Polyline{b, a};
   out.below_ = out.above_ = slope(out.points_[0], out.points_[1]);
@@ -60,7 +60,7 @@ ProjectionAxis ProjectionAxis::chain(const Polyline& points)
   for (size_t i = 1; i < p.size(); ++i) p[i].z() = std::max(p[i].z(), p[i - 1].z());
   if (!(p.back().z() > p.front().z()))
     throw InputError("the skeleton does not rise, so it gives no point per height",
-                     "use the iso-value strategy (decomposer.isovalue) for this part");
+                     "use the iso-value strategy (--strategy isovalue) for this part");
   ProjectionAxis out;
   double length = 0.0;
   for (size_t i = 1; i < p.size(); ++i) length += (p[i] - p[i - 1]).norm();

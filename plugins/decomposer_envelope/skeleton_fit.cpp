@@ -51,7 +51,7 @@ HeightFit fitChainByHeight(const Polyline& chain, double halfWidth)
   if (z0 > z1) std::swap(z0, z1);
   if (!(z1 > z0))
     throw InputError("the skeleton does not rise, so it gives no point per height",
-                     "use the iso-value strategy (decomposer.isovalue) for this part");
+                     "use the iso-value strategy (--strategy isovalue) for this part");
   HeightFit out;
   LinearFit whole;
   for (const Vec3& p : chain) whole.add(p, 1.0);

@@ -138,7 +138,7 @@ std::vector<BasePoint> BaseRing::discretise(size_t n, size_t* ambiguous) const
       throw InputError("the vertical half-plane at " + std::to_string(angle * 180.0 / kPi) +
                            " deg about the base centroid misses the lower edge",
                        "the base must go around its centroid (seen from above); split the part or "
-                       "use decomposer.isovalue");
+                       "use --strategy isovalue");
     many += hits[i].distances.size() > 1 ? 1 : 0;
     out.push_back(pointOnEdge(hits[i].bestEdge, hits[i].bestT, angle));
   }

@@ -92,7 +92,7 @@ GeodesicDecomposition decomposeByGeodesics(const TriangleMesh& mesh, const Bound
   const size_t n = options.pointsPerRevolution;
   if (n < 3)
     throw InputError("the generatrix count must be at least 3, not " + std::to_string(n),
-                     "raise points_per_rev");
+                     "raise --points-per-rev");
   if (upper && upper->vertices.size() < 3)
     throw InputError("the upper edge has fewer than 3 vertices", "repair the mesh");
   GeodesicDecomposition out;
@@ -212,7 +212,7 @@ GeodesicDecomposition decomposeByGeodesics(const TriangleMesh& mesh, const Bound
                            std::to_string(coverage.worstPair) + " and " +
                            std::to_string((coverage.worstPair + 1) % coverage.lines.size()) + " (tolerance " +
                            num(options.coverageTolerance) +
-                           " mm): raise points_per_rev or fill_rounds, or use decomposer.isovalue");
+                           " mm): raise --points-per-rev or --fill-rounds, or use --strategy isovalue");
 
   Generatrices& g = out.generatrices;
   const size_t count = coverage.lines.size();

@@ -63,8 +63,14 @@ size_t dropSpecks(IsoLevel& level, double minLength)
     what = "the part splits into " + std::to_string(after) + " branches " + where;
   else
     what = std::to_string(before) + " branches of the part merge into " + std::to_string(after) + " " + where;
-  throw InputError(what + "; Spira plans mono-branch parts only (multi-branch planning comes later)",
-                   "split the part into mono-branch pieces and plan each one on its own");
+  if (after > before)
+    throw InputError(what + ", narrower than a branch Spira plans on its own (a contour at least one bead ring, "
+                            "pi x bead width, and 5 % of the base edge around)",
+                     "remove the narrow branch in the CAD tool or cut the part below it; a narrower bead "
+                     "width (--bead-width) lets narrower branches count");
+  throw InputError(what + ": the wall closes around a hole or a handle, which one spiral per branch cannot "
+                          "follow",
+                   "cut the part below the merge and plan the pieces on their own");
 }
 
 SurfacePoint surfacePointAtVertex(const TriangleMesh& mesh, int v)

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "spira/base/error.h"
+#include "spira/io/unit_guess.h"
 
 namespace fs = std::filesystem;
 
@@ -167,6 +168,7 @@ ImportedPart importPart(const PluginRegistry& registry, const fs::path& file, co
 
   progress.report(0.8, "Validating");
   part.report = validateMesh(part.mesh);
+  if (auto unitNote = unitWarning(part.report.bounds, unit)) part.warnings.push_back(*unitNote);
   part.seconds.validate = clock.lap();
   progress.report(1.0, "Imported");
   return part;

@@ -116,6 +116,13 @@ size_t MeshReport::issueCount(MeshIssueKind k) const
   return i ? i->count : 0;
 }
 
+const char* MeshReport::className() const
+{
+  if (partClass == PartClass::Unsupported && componentCount == 1 && boundaryLoops.size() > 2)
+    return "multi_branch";
+  return partClassName(partClass);
+}
+
 bool MeshReport::isPlannable() const
 {
   return !hasIssue(MeshIssueKind::NonFiniteCoordinate) && !hasIssue(MeshIssueKind::NonManifoldEdge) &&
@@ -151,8 +158,8 @@ std::string MeshReport::toText() const
       << num(l.zMin) << " .. " << num(l.zMax) << " mm" << (l.closed ? "" : " (not closed)") << "\n";
   }
   s << "Connected components: " << componentCount << "\n";
-  s << "Part class: " << partClassName(partClass) << " - " << classReason << "\n";
-  s << "Plannable mesh: " << (isPlannable() ? "yes" : "no") << "\n";
+  s << "Part class: " << className() << " - " << classReason << "\n";
+  s << "Mesh defects that stop planning: " << (isPlannable() ? "none" : "yes (see the issues above)") << "\n";
   return s.str();
 }
 
@@ -186,7 +193,7 @@ nlohmann::json MeshReport::toJson() const
                      {"closed", l.closed}});
   j["boundary_loops"] = std::move(loops);
   j["component_count"] = componentCount;
-  j["part_class"] = partClassName(partClass);
+  j["part_class"] = className();
   j["class_reason"] = classReason;
   j["plannable"] = isPlannable();
   return j;

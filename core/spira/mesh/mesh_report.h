@@ -55,7 +55,10 @@ struct MeshReport {
   const MeshIssue* issue(MeshIssueKind k) const;  // nullptr when the mesh has none of that kind
   // No defect that stops planning (non-finite, non-manifold, inconsistent orientation). The part
   // class is separate: an Unsupported part may be plannable as a mesh but not as a part.
+  // No defect stops planning (the class may still be one Spira refuses).
   bool isPlannable() const;
+  // partClassName(), or "multi_branch" for one connected wall with more than two free edges.
+  const char* className() const;
   std::string toText() const;
   nlohmann::json toJson() const;
 };

@@ -181,8 +181,9 @@ void classify(MeshReport& r, size_t topologyFaces)
                     "or remove the extra pieces";
   } else if (loops == 0) {
     r.classReason =
-        "0 boundary loops: the mesh is watertight; Spira builds thin walls that stand on the substrate, "
-        "so the part needs an open base edge";
+        "0 boundary loops: the mesh is watertight (a solid or a closed shell); Spira builds a wall from "
+        "its surface and needs that surface open at the base: export the wall's mid-surface (or one of "
+        "its skins) without the base face";
   } else if (loops == 1) {
     r.partClass = PartClass::Closed;
     r.classReason = "1 boundary loop: a closed-top wall (a dome or cap) standing on its open base edge";
@@ -191,8 +192,8 @@ void classify(MeshReport& r, size_t topologyFaces)
     r.classReason = "2 boundary loops: an open wall (a tube or funnel) from its base edge to its top edge";
   } else {
     r.classReason = std::to_string(loops) +
-                    " boundary loops: the part has a hole or several branches; Spira plans walls with "
-                    "one base edge and at most one top edge";
+                    " boundary loops: a branching wall (a Y-piece or a junction), planned as one spiral per "
+                    "branch; a wall with a hole in its side cannot be planned";
   }
 }
 

@@ -240,6 +240,15 @@ SpiralResult buildPass(const Generatrices& g, const std::vector<ArcLengthPolylin
 
   computeFrames(path);
   report.normalsFlipped = orientBuildDirection(path, steps);
+  if (closure && count > 1) {
+    // The pole has no build direction of its own (every generatrix ends there): the torch keeps the
+    // last ring's orientation as it steps to the centre.
+    TrajectoryPoint& c = path.points.back();
+    const TrajectoryPoint& last = path.points[count - 2];
+    c.normal = last.normal;
+    c.tangent = last.tangent;
+    c.build = last.build;
+  }
   computeDepositHeights(path, steps, arcSteps);
   cosines.assign(count, 1.0);
   for (size_t q = 0; q < count; ++q)

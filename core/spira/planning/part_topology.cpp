@@ -1,6 +1,9 @@
 #include "spira/planning/part_topology.h"
 
+#include <algorithm>
 #include <cmath>
+#include <iomanip>
+#include <limits>
 #include <sstream>
 
 #include "spira/base/error.h"
@@ -44,39 +47,62 @@ PartTopology findPartTopology(const MeshReport& report, const TriangleMesh& mesh
     throw InputError("the part has " + std::to_string(report.componentCount) + " separate pieces",
                      "import one thin-walled part at a time");
   const auto& loops = report.boundaryLoops;
-  if (loops.empty() || (loops.size() > 2 && !allowBranches))
-    throw InputError(
-        "the part cannot be planned: " + report.classReason,
-        "Spira plans walls with one free edge on the substrate (closed parts) or two (open parts); "
-        "fill holes in the mesh tool");
+  if (loops.empty())
+    throw InputError("the part cannot be planned: " + report.classReason,
+                     "give Spira the wall as a surface open at its base: its mid-surface, or its inner or "
+                     "outer skin, exported without the base face");
+  if (loops.size() > 2 && !allowBranches)
+    throw InputError("the part cannot be planned as one spiral: " + report.classReason,
+                     "plan the whole part (each branch gets its own spiral), or cut it into walls with one "
+                     "base edge and at most one top edge");
   PartTopology t;
   t.freeEdgeCount = loops.size();
   t.branched = loops.size() > 2;
   t.partClass =
       t.branched ? PartClass::Unsupported : (loops.size() == 2 ? PartClass::Open : PartClass::Closed);
   if (lowerOverride >= static_cast<int>(loops.size()))
-    throw InputError("lower boundary " + std::to_string(lowerOverride) + " does not exist (the part has " +
-                         std::to_string(loops.size()) + ")",
-                     "choose a loop index from 'spira-cli info', counted from 0, or -1 for automatic");
+    throw InputError("loop " + std::to_string(lowerOverride + 1) + " does not exist: the part has " +
+                         std::to_string(loops.size()) + " boundary loop(s)",
+                     "choose one of the loops 1 to " + std::to_string(loops.size()) +
+                         " that 'spira-cli info' lists (--lower-loop N), or leave the choice automatic");
   if (lowerOverride >= 0) {
     t.lowerIndex = lowerOverride;
   } else {
-    double best = std::numeric_limits<double>::infinity();
+    double lowest = std::numeric_limits<double>::infinity();
     for (size_t i = 0; i < loops.size(); ++i) {
-      const double gap = std::abs(meanZ(loops[i], mesh) - substrateZ);
-      if (gap < best) {
-        best = gap;
+      const double z = meanZ(loops[i], mesh);
+      if (z < lowest) {
+        lowest = z;
         t.lowerIndex = static_cast<int>(i);
       }
     }
   }
   t.lower = loops[static_cast<size_t>(t.lowerIndex)];
-  t.lowerGapToSubstrate = std::abs(meanZ(t.lower, mesh) - substrateZ);
+  double lowZ = std::numeric_limits<double>::infinity();
+  for (int v : t.lower.vertices) lowZ = std::min(lowZ, mesh.vertices[static_cast<size_t>(v)].z());
+  t.lowerGapToSubstrate = lowZ - substrateZ;
   if (t.partClass == PartClass::Open) {
     t.upperIndex = 1 - t.lowerIndex;
     t.upper = loops[static_cast<size_t>(t.upperIndex)];
   }
   return t;
+}
+
+void requireOnSubstrate(const PartTopology& topology, double substrateZ, double tolerance)
+{
+  const double gap = topology.lowerGapToSubstrate;
+  if (!(std::abs(gap) > tolerance)) return;
+  std::ostringstream what, hint;
+  what << std::fixed << std::setprecision(2) << "the part does not stand on the substrate: its base (loop "
+       << topology.lowerIndex + 1 << ", z " << topology.lower.zMin << " .. " << topology.lower.zMax
+       << " mm) is " << std::abs(gap) << " mm " << (gap > 0.0 ? "above" : "below")
+       << " the substrate plane z = " << substrateZ << " mm";
+  hint << std::fixed << std::setprecision(2)
+       << "drop the part onto the substrate (spira-cli plan --drop; Placement > Drop to Substrate in "
+          "Spira), or plan on a substrate at z = "
+       << substrateZ + gap << " mm (--substrate-z " << substrateZ + gap
+       << "); if the base is the wrong loop, choose it with --lower-loop N";
+  throw InputError(what.str(), hint.str());
 }
 
 }  // namespace spira

@@ -14,20 +14,27 @@ struct PartTopology {
   int upperIndex = -1;  // open parts only
   BoundaryLoop lower;
   std::optional<BoundaryLoop> upper;
-  double lowerGapToSubstrate = 0.0;  // mm: the lower loop's mean distance from the substrate plane
+  // mm from the substrate plane up to the lower loop's lowest point: negative when the part reaches
+  // below the substrate, positive when it floats above it.
+  double lowerGapToSubstrate = 0.0;
   size_t freeEdgeCount = 0;          // boundary loops of the part
   // More than two free edges (allowed only with `allowBranches`): a multi-branch part, planned as
   // mono-branch sub-parts. partClass is then Unsupported and `upper` empty.
   bool branched = false;
 };
 
-// Finds the lower boundary (the loop touching the substrate plane z = substrateZ: the one whose
-// mean height is closest to it) and, for open parts, the upper one. `lowerOverride` >= 0 picks the
-// lower loop by index instead (the user's choice). Throws InputError, saying what is wrong and what
+// Finds the lower boundary (the part's lowest loop by mean height: the one on the substrate plane
+// z = substrateZ or, for a part placed away from it, the one facing it) and, for open parts, the
+// upper one. `lowerOverride` >= 0 picks the lower loop by index instead (the user's choice; 'info'
+// and the GUI show index + 1). Throws InputError, saying what is wrong and what
 // to do, for meshes that cannot be planned: defects (non-manifold, inconsistent orientation,
 // non-finite), several components, or no boundary loop; and for more than two boundary loops
 // unless `allowBranches` (the planner splits such parts into branches, see branch_split.h).
 PartTopology findPartTopology(const MeshReport& report, const TriangleMesh& mesh, double substrateZ,
                               int lowerOverride = -1, bool allowBranches = false);
+
+// Throws InputError when the part's lower loop is more than `tolerance` mm from the substrate plane,
+// with the gap and the changes that put it there (drop the part, or move the substrate plane).
+void requireOnSubstrate(const PartTopology& topology, double substrateZ, double tolerance);
 
 }  // namespace spira

@@ -1,5 +1,7 @@
 #include "spira/planning/plan_files.h"
 
+#include <cmath>
+
 #include <nlohmann/json.hpp>
 
 #include "spira/base/atomic_file.h"
@@ -49,6 +51,7 @@ nlohmann::json pathJson(const PathSummary& p)
           {"height_max", s.heightMax},
           {"height_mean", s.heightMean},
           {"feasible", p.feasible()},
+          {"deposit_flags", p.depositFlags},
           {"violations", s.violations.size()},
           {"path_length", s.pathLength},
           {"max_jump", s.maxJump},
@@ -72,6 +75,39 @@ nlohmann::json branchingJson(const BranchingSummary& b)
           {"junction_gap_mm", b.junctionGap},
           {"junction_gap_area_mm2", b.junctionGapArea},
           {"depth_limited", b.depthLimited}};
+}
+
+nlohmann::json depositCheckJson(const DepositCheckReport& d)
+{
+  nlohmann::json counts = nlohmann::json::object();
+  for (int k = 0; k < 5; ++k) counts[depositDefectName(static_cast<DepositDefect>(k))] = d.counts[k];
+  nlohmann::json points = nlohmann::json::array();
+  for (const DepositFlag& f : d.flags) {
+    if (points.size() >= 1000) break;
+    points.push_back({{"point", f.point},
+                      {"kind", depositDefectName(f.kind)},
+                      {"height", std::isfinite(f.height) ? nlohmann::json(f.height) : nlohmann::json(nullptr)},
+                      {"position", point(f.position)}});
+  }
+  nlohmann::json j = {{"feasible", d.feasible},
+                      {"summary", d.summary()},
+                      {"points_checked", d.pointsChecked},
+                      {"height_min", d.heightMin},
+                      {"height_max", d.heightMax},
+                      {"height_mean", d.heightMean},
+                      {"planned_difference_max", d.plannedDifferenceMax},
+                      {"jump_length", d.jumpLength},
+                      {"counts", counts},
+                      {"flagged", d.flags.size()},
+                      {"flagged_points", points}};
+  if (d.coverageChecked)
+    j["coverage"] = {{"surface_area_mm2", d.surfaceArea},
+                     {"uncovered_area_mm2", d.uncoveredArea},
+                     {"uncovered_fraction", d.uncoveredFraction()},
+                     {"cover_radius_mm", d.coverRadius},
+                     {"largest_gap_mm", d.largestGap},
+                     {"largest_gap_at", point(d.largestGapAt)}};
+  return j;
 }
 
 }  // namespace
@@ -128,6 +164,7 @@ nlohmann::json planReportJson(const PlanOutput& plan, const std::string& strateg
   j["ramp_height_max"] = s.rampHeightMax;
   j["feasible"] = plan.feasible();
   j["window_feasible"] = s.feasible;
+  j["deposit_check"] = depositCheckJson(plan.deposits);
   j["length_criterion"] = {
       {"length_min", s.lengthCriterion.lengthMin}, {"length_max", s.lengthCriterion.lengthMax},
       {"n_layers", s.lengthCriterion.nLayers},     {"step_spread", s.lengthCriterion.stepSpread},

@@ -119,7 +119,6 @@ void finishMonoBranch(const PluginRegistry& registry, const PlanRequest& request
   clock.lap("process");
   out.paths = {wholePathSummary(out)};
   out.paths[0].area = request.report.area;
-  progress.report(1.0, "done");
 }
 
 // Contours shorter than this are not branches: a wall narrower than the bead cannot stand on its
@@ -127,6 +126,29 @@ void finishMonoBranch(const PluginRegistry& registry, const PlanRequest& request
 double branchPerimeter(const PlanOutput& out, const Settings& settings)
 {
   return std::max(kPi * settings.process.beadWidth, 0.05 * out.topology.lower.length);
+}
+
+DepositCheckSettings depositSettings(const PlanRequest& request, const Settings& settings)
+{
+  DepositCheckSettings d;
+  d.substrateZ = request.substrateZ;
+  d.hMin = settings.spiral.hMin;
+  d.hMax = settings.spiral.hMax;
+  d.tolerance = settings.spiral.heightTolerance * settings.spiral.h;
+  d.beadWidth = settings.process.beadWidth;
+  return d;
+}
+
+// The verdict: the trajectory judged on its own, each sub-path told how many of its points failed.
+void judgeDeposits(const PlanRequest& request, const Settings& settings, PlanOutput& out, Progress& progress)
+{
+  SubProgress p(progress, 0.95, 1.0, "deposit check");
+  out.deposits = checkDeposits(out.spiral.trajectory, &request.mesh, depositSettings(request, settings), p);
+  for (PathSummary& path : out.paths) {
+    path.depositFlags = 0;
+    for (const DepositFlag& f : out.deposits.flags)
+      if (f.point >= path.firstPoint && f.point < path.firstPoint + path.pointCount) ++path.depositFlags;
+  }
 }
 
 }  // namespace
@@ -153,6 +175,8 @@ PlanOutput planPart(const PluginRegistry& registry, const PlanRequest& request, 
   StageClock clock(out.timings);
   out.topology = findPartTopology(request.report, request.mesh, request.substrateZ, request.lowerLoopOverride,
                                   /*allowBranches=*/true);
+  // Half the thinnest bead: a wider gap leaves the first ring in the air or under the plate.
+  requireOnSubstrate(out.topology, request.substrateZ, 0.5 * settings.spiral.hMin);
   checkUpperEdge(out.topology, settings);
   clock.lap("topology");
   const double perimeter = branchPerimeter(out, settings);
@@ -179,6 +203,8 @@ PlanOutput planPart(const PluginRegistry& registry, const PlanRequest& request, 
   }
   if (!branches) {
     finishMonoBranch(registry, request, settings, out, clock, progress);
+    judgeDeposits(request, settings, out, progress);
+    clock.lap("deposit check");
     return out;
   }
 
@@ -193,16 +219,23 @@ PlanOutput planPart(const PluginRegistry& registry, const PlanRequest& request, 
   clock.lap("branches");
   if (pieces.pieces.size() < 2) {
     if (out.topology.branched)
-      throw InputError("the part cannot be planned: " + request.report.classReason +
-                           ", and its contours do not part into branches",
-                       "Spira plans walls with one free edge on the substrate (closed parts), two (open "
-                       "parts) or one free edge per branch; fill holes in the mesh tool");
+      throw InputError("the part cannot be planned: it has " +
+                           std::to_string(request.report.boundaryLoops.size()) +
+                           " free edges but its walls do not part into branches, so at least one free edge "
+                           "is a hole in a wall",
+                       "close the hole(s) in the CAD or mesh tool ('spira-cli info' lists the loops and their "
+                       "heights): Spira plans walls with one free edge on the substrate, at most one on top, "
+                       "and one more per branch");
     finishMonoBranch(registry, request, settings, out, clock, progress);
+    judgeDeposits(request, settings, out, progress);
+    clock.lap("deposit check");
     return out;
   }
-  SubProgress pp(progress, 0.3, 1.0, "sub-parts");
+  SubProgress pp(progress, 0.3, 0.95, "sub-parts");
   planBranchPieces(registry, request, std::move(pieces), out, pp);
   clock.lap("sub-parts");
+  judgeDeposits(request, settings, out, progress);
+  clock.lap("deposit check");
   progress.report(1.0, "done");
   return out;
 }

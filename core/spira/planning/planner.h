@@ -14,6 +14,7 @@
 #include "spira/plugin/closure_finder.h"
 #include "spira/plugin/parameter.h"
 #include "spira/plugin/plugin_registry.h"
+#include "spira/verify/deposit_check.h"
 
 namespace spira {
 
@@ -47,7 +48,8 @@ struct PathSummary {
   SpiralReport spiral;  // its own report: violation indices count from its first point
   ProcessReport process;
   std::vector<std::string> warnings;
-  bool feasible() const { return spiral.feasible; }
+  size_t depositFlags = 0;  // points of this sub-path the deposit check flagged
+  bool feasible() const { return depositFlags == 0; }
 };
 
 // How a multi-branch part was split (see branch_split.h).
@@ -78,10 +80,11 @@ struct PlanOutput {
   std::vector<PathSummary> paths;
   std::optional<BranchingSummary> branching;  // set for a multi-branch part
 
-  // Within the process window (Eq. 3.6, and Eq. 3.15 on every point). Process-limit
-  // violations do not make a plan infeasible: the speeds are clamped to the limits and each
-  // violation is reported (they arise where the spiral degenerates, at a closure point).
-  bool feasible() const { return spiral.report.feasible; }
+  // The verdict, from the trajectory alone (docs/deposit-check.md); spiral.report keeps the
+  // heights the spiral builder planned. Process-limit violations do not make a plan infeasible:
+  // the speeds are clamped to the limits and each violation is reported.
+  DepositCheckReport deposits;
+  bool feasible() const { return deposits.feasible; }
 };
 
 // Runs the CTPP pipeline: part topology, scalar field (harmonic for open parts; geodesic distance
@@ -90,6 +93,7 @@ struct PlanOutput {
 // A multi-branch part (more than two free edges, or a field whose contours part into several
 // loops at least pi x bead width long) is split into mono-branch sub-parts (branch_split.h), each
 // planned on its own, trunk first (thesis §3.4.3).
+// Last, the deposit check judges the trajectory on its own (see deposit_check.h).
 // Throws InputError/AlgorithmError for parts or settings it cannot plan; an infeasible plan is a
 // result (feasible() == false), not an error.
 PlanOutput planPart(const PluginRegistry& registry, const PlanRequest& request, Progress& progress);

@@ -92,17 +92,10 @@ void MainWindow::finishPlan(const TaskOutcome& outcome, const DocumentState& sna
                       tr("Press Plan (F5) again to bring them up to date."));
       log_->info(tr("Planned in %1 s: %2.")
                      .arg(QLocale().toString(result.seconds, 'f', 2), fromStd(result.summary)));
-      if (!result.feasible) {
-        log_->warning(
-            result.windowViolations > 0
-                ? tr("The plan is infeasible: %n point(s) need a deposit height outside the process window.",
-                     nullptr, static_cast<int>(result.windowViolations))
-                : tr("The plan is infeasible: the generatrices' lengths differ more than the process window "
-                     "allows."),
-            tr("Widen the window (Thinnest/Thickest deposit or Modulation range), change the nominal height, "
-               "or "
-               "refine the decomposition."));
-      }
+      if (!result.feasible)
+        log_->warning(tr("The plan is infeasible: %1.").arg(fromStd(result.depositSummary)),
+                      tr("The points are listed below (click one to select it). Widen the window "
+                         "(Thinnest/Thickest deposit), change the nominal height or the strategy."));
     }
   }
   emit planFinished(outcome);

@@ -2,10 +2,12 @@
 
 #include <algorithm>
 #include <functional>
+#include <map>
 #include <vector>
 
 #include <QListWidget>
 #include <QLocale>
+#include <nlohmann/json.hpp>
 
 #include "spira/document/results.h"
 #include "spira/ui/log_panel.h"
@@ -42,6 +44,43 @@ struct Lister {
   }
 };
 
+// The deposit check's points, from the spiral stage's report (report.json's deposit_check).
+void listDepositFlags(const Lister& lister, const Results& results)
+{
+  const auto& report = results.report(Stage::Spiral);
+  if (!report || !report->contains("deposit_check")) return;
+  const nlohmann::json& check = (*report)["deposit_check"];
+  const nlohmann::json& points = check.value("flagged_points", nlohmann::json::array());
+  std::vector<size_t> flagged;
+  std::map<size_t, QString> what;
+  const QLocale loc;
+  for (const nlohmann::json& f : points) {
+    const size_t i = f.value("point", size_t{0});
+    if (i >= lister.path.size()) continue;
+    const std::string kind = f.value("kind", std::string());
+    const nlohmann::json& h = f.contains("height") ? f["height"] : nlohmann::json(nullptr);
+    const QString mm = h.is_number() ? loc.toString(h.get<double>(), 'f', 2) : QString();
+    QString text;
+    if (kind == "below_deposit")
+      text = QObject::tr("it lies %1 mm under material already laid.").arg(loc.toString(-h.get<double>(), 'f', 2));
+    else if (kind == "thin")
+      text = QObject::tr("the bead under it is only %1 mm below: thinner than the process lays.").arg(mm);
+    else if (kind == "thick")
+      text = QObject::tr("the material below is %1 mm away: thicker than the process lays.").arg(mm);
+    else if (kind == "jump")
+      text = QObject::tr("reached by a %1 mm jump with the arc on.").arg(mm);
+    else
+      text = mm.isEmpty() ? QObject::tr("nothing below it: the bead would be laid in mid-air.")
+                          : QObject::tr("the material below is %1 mm away: the bead would be laid in mid-air.")
+                                .arg(mm);
+    if (what.count(i) == 0) flagged.push_back(i);
+    what[i] += (what[i].isEmpty() ? QString() : QStringLiteral(" ")) + text;
+  }
+  lister(
+      flagged, [&](size_t i) { return what[i]; },
+      QObject::tr("... and %1 more point(s) the deposit check rejected (report.json's deposit_check lists them)."));
+}
+
 }  // namespace
 
 void listOffendingPoints(LogPanel& log, QListWidget& list, const Results& results, int pointRole,
@@ -64,6 +103,8 @@ void listOffendingPoints(LogPanel& log, QListWidget& list, const Results& result
         },
         QObject::tr("... and %1 more point(s) outside the window (see the process chart's magenta dots)."));
   }
+
+  listDepositFlags(lister, results);
 
   const auto& k = results.kinematics;
   if (!k || k->checks.size() != path.size()) return;

@@ -107,6 +107,7 @@ PlanJobResult runPlan(const DocumentState& snapshot, const PluginRegistry& regis
 
   PlanJobResult out;
   out.feasible = plan.feasible();
+  out.depositSummary = plan.deposits.summary();
   out.warnings = plan.warnings;
   out.summary = summaryLine(plan);
   out.windowViolations = plan.spiral.report.violations.size();

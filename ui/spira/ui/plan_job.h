@@ -31,7 +31,8 @@ struct PlanJobResult {
   Results results;
   std::vector<std::string> warnings;
   bool feasible = false;
-  std::string summary;  // one line: revolutions, points, heights, build time
+  std::string summary;         // one line: revolutions, points, heights, build time
+  std::string depositSummary;  // the deposit check's verdict in one sentence
   size_t windowViolations = 0;
   size_t limitViolations = 0;
   double seconds = 0.0;

@@ -9,10 +9,12 @@
 #include <QImageWriter>
 #include <QTextStream>
 #include <QWindow>
+#include <nlohmann/json.hpp>
 
 #include "spira/document/document.h"
 #include "spira/ui/main_window.h"
 #include "spira/ui/scene_view.h"
+#include "spira/ui/task_runner.h"
 
 namespace spira::ui {
 
@@ -81,6 +83,25 @@ int takeScreenshot(const ScreenshotRequest& request, QTextStream& err)
     return kExitBadInput;
   }
 
+  int planned = kExitSuccess;
+  if (request.plan) {
+    bool finished = false;
+    TaskOutcome outcome;
+    QObject::connect(&window, &MainWindow::planFinished, [&](const TaskOutcome& o) {
+      outcome = o;
+      finished = true;
+    });
+    window.plan();
+    while (!finished) QApplication::processEvents(QEventLoop::AllEvents, 20);
+    window.waitUntilIdle();
+    if (!outcome.succeeded()) {
+      printError(err, QStringLiteral("the part could not be planned: %1").arg(outcome.message), outcome.hint);
+      return kExitBadInput;
+    }
+    const auto& report = doc.results().report(Stage::Spiral);
+    if (!report || !report->value("feasible", false)) planned = kExitInfeasible;
+  }
+
   const QImage image = window.captureImage();
   if (image.isNull()) {
     printError(err, QStringLiteral("the window could not be rendered"),
@@ -93,7 +114,7 @@ int takeScreenshot(const ScreenshotRequest& request, QTextStream& err)
                QStringLiteral("choose a folder you can write to"));
     return kExitFailure;
   }
-  return kExitSuccess;
+  return planned;
 }
 
 }  // namespace spira::ui

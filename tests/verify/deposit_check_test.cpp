@@ -1,0 +1,176 @@
+#include <cmath>
+#include <functional>
+
+#include <gtest/gtest.h>
+
+#include "spira/base/units.h"
+#include "spira/verify/deposit_check.h"
+
+namespace spira {
+namespace {
+
+constexpr double kRadius = 30.0;
+constexpr int kPointsPerRing = 360;
+
+// A ring-by-ring spiral on a vertical cylinder as a spiral builder would lay it: the first ring
+// climbs from h_min to h_max above the substrate, every later ring lies h = 2 mm above the last.
+// `lift(ring, k)` adds to the height of point k of a ring.
+Trajectory cylinderSpiral(int rings, const std::function<double(int, int)>& lift = {})
+{
+  Trajectory t;
+  for (int r = 0; r < rings; ++r)
+    for (int k = 0; k < kPointsPerRing; ++k) {
+      const double a = 2.0 * kPi * k / kPointsPerRing;
+      TrajectoryPoint p;
+      const double z = 1.5 + double(k) / kPointsPerRing + 2.0 * r;
+      p.position = Vec3(kRadius * std::cos(a), kRadius * std::sin(a), z + (lift ? lift(r, k) : 0.0));
+      p.normal = Vec3(std::cos(a), std::sin(a), 0.0);
+      p.tangent = Vec3(-std::sin(a), std::cos(a), 0.0);
+      p.build = Vec3::UnitZ();
+      p.revolution = r;
+      p.generatrix = k;
+      p.height = r == 0 ? z : 2.0;
+      t.points.push_back(p);
+    }
+  return t;
+}
+
+DepositCheckSettings window()
+{
+  DepositCheckSettings s;
+  s.hMin = 1.5;
+  s.hMax = 2.5;
+  s.tolerance = 0.01;
+  s.beadWidth = 4.0;
+  return s;
+}
+
+// The cylinder's wall from z = 0 to `height`, 180 facets around, 1 mm rows.
+TriangleMesh cylinderWall(double height)
+{
+  TriangleMesh m;
+  const int around = 180, rows = static_cast<int>(std::ceil(height));
+  for (int j = 0; j <= rows; ++j)
+    for (int i = 0; i < around; ++i) {
+      const double a = 2.0 * kPi * i / around;
+      m.vertices.emplace_back(kRadius * std::cos(a), kRadius * std::sin(a), height * j / rows);
+    }
+  for (int j = 0; j < rows; ++j)
+    for (int i = 0; i < around; ++i) {
+      const int a = j * around + i, b = j * around + (i + 1) % around;
+      m.faces.push_back({a, b, b + around});
+      m.faces.push_back({a, b + around, a + around});
+    }
+  return m;
+}
+
+DepositCheckReport check(const Trajectory& t, const TriangleMesh* surface = nullptr)
+{
+  NullProgress progress;
+  return checkDeposits(t, surface, window(), progress);
+}
+
+TEST(DepositCheck, StackedRingsAreSupportedAtTheirTrueHeights)
+{
+  const DepositCheckReport r = check(cylinderSpiral(20));
+  EXPECT_TRUE(r.feasible) << r.summary();
+  EXPECT_EQ(r.pointsChecked, 20u * kPointsPerRing);
+  EXPECT_TRUE(r.flags.empty());
+  // The first ring stands on the substrate (1.5 .. 2.5 mm), every other ring 2 mm above the last.
+  EXPECT_NEAR(r.heightMin, 1.5, 1e-9);
+  EXPECT_NEAR(r.heightMax, 2.5 - 1.0 / kPointsPerRing, 1e-9);
+  EXPECT_LT(r.plannedDifferenceMax, 1e-6);
+}
+
+TEST(DepositCheck, RingLiftedIntoMidAirIsUnsupportedAndItsSeamAJump)
+{
+  const DepositCheckReport r =
+      check(cylinderSpiral(12, [](int ring, int) { return ring >= 6 ? 30.0 : 0.0; }));
+  EXPECT_FALSE(r.feasible);
+  EXPECT_EQ(r.count(DepositDefect::Unsupported), size_t(kPointsPerRing));
+  EXPECT_EQ(r.count(DepositDefect::Jump), 1u);
+  const DepositFlag& first = r.flags.front();
+  EXPECT_EQ(first.point, 6u * kPointsPerRing);
+  // The seam segment rises 31 mm more than a seam does; ring 6 stands 32 mm above ring 5.
+  EXPECT_EQ(first.kind, DepositDefect::Jump);
+  const double rise = 31.0 + 1.0 / kPointsPerRing, chord = 2.0 * kRadius * std::sin(kPi / kPointsPerRing);
+  EXPECT_NEAR(first.height, std::hypot(rise, chord), 1e-9);
+  const DepositFlag& lifted = r.flags[1];
+  EXPECT_EQ(lifted.kind, DepositDefect::Unsupported);
+  EXPECT_NEAR(lifted.height, 32.0, 1e-6);
+  EXPECT_NE(r.summary().find("in mid-air"), std::string::npos) << r.summary();
+}
+
+TEST(DepositCheck, PointPushedUnderThePreviousRingLiesBelowTheDeposit)
+{
+  const int ring = 5, at = 180;
+  const DepositCheckReport r =
+      check(cylinderSpiral(10, [&](int rr, int k) { return rr == ring && k == at ? -3.0 : 0.0; }));
+  EXPECT_FALSE(r.feasible);
+  ASSERT_EQ(r.count(DepositDefect::BelowDeposit), 1u);
+  const auto below = std::find_if(r.flags.begin(), r.flags.end(),
+                                  [](const DepositFlag& f) { return f.kind == DepositDefect::BelowDeposit; });
+  EXPECT_EQ(below->point, size_t(ring * kPointsPerRing + at));
+  EXPECT_NEAR(below->height, -1.0, 1e-6);
+  // The next ring lies 5 mm above the dent, beyond h_max.
+  EXPECT_EQ(r.count(DepositDefect::Thick), 1u);
+}
+
+TEST(DepositCheck, ArcOnJumpIsFlaggedAndNotTakenForMaterial)
+{
+  Trajectory t = cylinderSpiral(8);
+  // 30 points (15.7 mm of ring 3) left out: the arc bridges them in one straight move.
+  t.points.erase(t.points.begin() + 3 * kPointsPerRing + 100, t.points.begin() + 3 * kPointsPerRing + 130);
+  const DepositCheckReport r = check(t);
+  EXPECT_FALSE(r.feasible);
+  ASSERT_EQ(r.count(DepositDefect::Jump), 1u);
+  EXPECT_EQ(r.flags.front().point, size_t(3 * kPointsPerRing + 100));
+  EXPECT_NEAR(r.flags.front().height, 2.0 * kRadius * std::sin(kPi * 31 / kPointsPerRing), 0.05);
+  // Ring 4 over the bridged stretch finds ring 2, 4 mm down.
+  EXPECT_GT(r.count(DepositDefect::Thick), 20u);
+  EXPECT_EQ(r.count(DepositDefect::Unsupported), 0u);
+}
+
+TEST(DepositCheck, ArcOffTravelIsNeitherMaterialNorAJump)
+{
+  Trajectory t = cylinderSpiral(4);
+  for (int k = 0; k < kPointsPerRing; ++k) t.points[size_t(3 * kPointsPerRing + k)].arcOn = false;
+  const DepositCheckReport r = check(t);
+  EXPECT_TRUE(r.feasible) << r.summary();
+  EXPECT_EQ(r.pointsChecked, 3u * kPointsPerRing);
+}
+
+TEST(DepositCheck, UncoveredBandAboveTheLastRingIsMeasured)
+{
+  const int rings = 10;
+  const Trajectory t = cylinderSpiral(rings);
+  const double top = 2.5 + 2.0 * (rings - 1);  // highest point of the last ring
+  const TriangleMesh exact = cylinderWall(std::ceil(top));
+  const DepositCheckReport covered = check(t, &exact);
+  EXPECT_TRUE(covered.feasible) << covered.summary();
+  EXPECT_EQ(covered.uncoveredArea, 0.0);
+  EXPECT_LT(covered.largestGap, 2.51);
+
+  const double extra = 12.0;
+  const TriangleMesh taller = cylinderWall(std::ceil(top) + extra);
+  const DepositCheckReport r = check(t, &taller);
+  EXPECT_FALSE(r.feasible);
+  EXPECT_TRUE(r.flags.empty());
+  // The band beyond the cover radius (2.51 mm) over the last ring's rising top, about 2 pi R x 10 mm.
+  const double band = 2.0 * kPi * kRadius * (std::ceil(top) + extra - (top - 0.5) - 2.51);
+  EXPECT_NEAR(r.uncoveredArea, band, 0.05 * band);
+  EXPECT_NEAR(r.largestGap, std::ceil(top) + extra - (top - 1.0), 0.5);
+  EXPECT_NE(r.summary().find("not covered"), std::string::npos) << r.summary();
+}
+
+TEST(DepositCheck, SubPathChangeWithTheArcOnIsAJump)
+{
+  Trajectory t = cylinderSpiral(4);
+  for (size_t i = 2 * kPointsPerRing; i < t.size(); ++i) t.points[i].path = 1;
+  const DepositCheckReport r = check(t);
+  ASSERT_EQ(r.count(DepositDefect::Jump), 1u);
+  EXPECT_EQ(r.flags.front().point, size_t(2 * kPointsPerRing));
+}
+
+}  // namespace
+}  // namespace spira
