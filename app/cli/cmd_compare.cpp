@@ -4,8 +4,8 @@
 
 #include "builtin_plugins.h"
 #include "cli_common.h"
-#include "part_placement.h"
 #include "part_loading.h"
+#include "part_placement.h"
 #include "spira/base/atomic_file.h"
 #include "spira/planning/plan_schemas.h"
 #include "spira/planning/strategy_compare.h"
@@ -62,16 +62,16 @@ int cmdCompare(const std::vector<std::string>& argv)
   std::vector<FlagTarget> targets = flags.targets;
   targets.insert(targets.end(), importFlags.targets().begin(), importFlags.targets().end());
   if (args.takeSwitch("--help")) {
-    std::cout
-        << "usage: spira-cli compare PART -o DIR [--lower-loop N] [--substrate-z Z] [--drop] [parameter flags]\n\n"
-           "Plans PART with every decomposition strategy in the same process window, slices it\n"
-           "with horizontal planes every h as the 2.5D reference (each point's deposit is its\n"
-           "distance to the layer below; the upper edge is the last layer), and writes\n"
-           "DIR/compare.json (per strategy: feasible or why it failed, generatrix lengths,\n"
-           "deposit min/max/mean, points outside the window, revolutions, runtime) and\n"
-           "DIR/compare.csv (strategy,x,y,z,height per point). A strategy that fails is listed,\n"
-           "not an error; exit code 4 when no strategy plans the part feasibly.\n\n"
-        << kPlacementHelp << paramFlagsHelp(targets);
+    std::cout << "usage: spira-cli compare PART -o DIR [--lower-loop N] [--substrate-z Z] [--drop] "
+                 "[parameter flags]\n\n"
+                 "Plans PART with every decomposition strategy in the same process window, slices it\n"
+                 "with horizontal planes every h as the 2.5D reference (each point's deposit is its\n"
+                 "distance to the layer below; the upper edge is the last layer), and writes\n"
+                 "DIR/compare.json (per strategy: feasible or why it failed, generatrix lengths,\n"
+                 "deposit min/max/mean, points outside the window, revolutions, runtime) and\n"
+                 "DIR/compare.csv (strategy,x,y,z,height per point). A strategy that fails is listed,\n"
+                 "not an error; exit code 4 when no strategy plans the part feasibly.\n\n"
+              << kPlacementHelp << paramFlagsHelp(targets);
     return kOk;
   }
   const std::string outDir = args.takeOption("-o");
@@ -93,8 +93,9 @@ int cmdCompare(const std::vector<std::string>& argv)
   writeComparisonFiles(comparison, outDir);
   printTable(comparison, std::cout);
   std::cout << "wrote " << outDir << "/compare.json and compare.csv\n";
-  const bool anyFeasible = std::any_of(comparison.strategies.begin(), comparison.strategies.end(),
-                                       [](const StrategyOutcome& s) { return s.kind == "ctpp" && s.feasible; });
+  const bool anyFeasible =
+      std::any_of(comparison.strategies.begin(), comparison.strategies.end(),
+                  [](const StrategyOutcome& s) { return s.kind == "ctpp" && s.feasible; });
   if (!anyFeasible)
     std::cerr << "no strategy plans this part feasibly: see each strategy's failure above and 'spira-cli "
                  "plan PART --strategy S' for the points the deposit check rejects\n";

@@ -208,8 +208,8 @@ int cmdExport(const std::vector<std::string>& argv)
   if (csv) return writeCsv(source, cell, outDir);
   const bool forced = exporterValues.has("force") && exporterValues.getBool("force");
   const nlohmann::json& r = source.report;
-  const bool infeasible = r.is_object() && r.contains("feasible") && r["feasible"].is_boolean() &&
-                          !r["feasible"].get<bool>();
+  const bool infeasible =
+      r.is_object() && r.contains("feasible") && r["feasible"].is_boolean() && !r["feasible"].get<bool>();
   if (infeasible && !forced)
     throw InfeasibleError("the plan is infeasible: " + planSummary(r),
                           "change the plan (spira-cli plan prints the change that works), or add --force to "

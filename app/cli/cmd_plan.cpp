@@ -4,8 +4,8 @@
 
 #include "builtin_plugins.h"
 #include "cli_common.h"
-#include "part_placement.h"
 #include "part_loading.h"
+#include "part_placement.h"
 #include "robot_output.h"
 #include "spira/base/atomic_file.h"
 #include "spira/base/error.h"
@@ -14,9 +14,9 @@
 #include "spira/pipeline/plan_motion.h"
 #include "spira/pipeline/prep_schema.h"
 #include "spira/planning/joints_csv.h"
+#include "spira/planning/plan_advice.h"
 #include "spira/planning/plan_files.h"
 #include "spira/planning/plan_schemas.h"
-#include "spira/planning/plan_advice.h"
 #include "spira/planning/planner.h"
 
 namespace spira::cli {
@@ -107,7 +107,8 @@ int cmdPlan(const std::vector<std::string>& argv)
 
   if (help) {
     std::cout
-        << "usage: spira-cli plan PART -o DIR [--strategy isovalue] [--lower-loop N] [--substrate-z Z] [--drop]\n"
+        << "usage: spira-cli plan PART -o DIR [--strategy isovalue] [--lower-loop N] [--substrate-z Z] "
+           "[--drop]\n"
            "                       [--cell CELL] [--keep-collisions] [--export krl|fanuc_tp] [--timing]\n"
            "                       [parameter flags]\n\n"
            "Plans one continuous spiral on PART and writes DIR/trajectory.csv and DIR/report.json.\n"

@@ -197,7 +197,7 @@ void requireAroundAxis(const TriangleMesh& mesh, const BoundaryLoop& loop, const
     throw InputError(std::string("the ") + which + " free edge goes " + std::to_string(std::abs(turns)) +
                          " times around the projection axis instead of once",
                      "envelope projection needs the axis inside the part; use the iso-value strategy "
-                     "(decomposer.isovalue) for this part");
+                     "(--strategy isovalue) for this part");
 }
 
 }  // namespace
@@ -262,7 +262,7 @@ EnvelopeDecomposition decomposeByEnvelopeProjection(const TriangleMesh& mesh, co
                          num(angle, 1) + " deg: " + first->first.what + " (" + std::to_string(failing) +
                          " of " + std::to_string(n) + " generatrices fail)",
                      "envelope projection suits open parts without overhangs; use the iso-value strategy "
-                     "(decomposer.isovalue) or the geodesic one (decomposer.geodesic)");
+                     "(--strategy isovalue) or the geodesic one (--strategy geodesic)");
   }
 
   double total = 0.0;

@@ -99,7 +99,8 @@ TEST(CliCompare, PlanarSlicingLeavesTheWindowWhereCtppStaysInside)
   EXPECT_EQ(static_cast<int>(low), (*planar)["points_outside_window"].get<int>());
 }
 
-// A strategy that cannot plan the part is listed with its reason; the others still run.
+// A strategy that cannot plan the part is listed with its reason; the others still run. When none
+// plans it, the comparison is still written and the exit code says the part is infeasible.
 TEST(CliCompare, AFailingStrategyIsListedNotAnError)
 {
   TempDir dir;
@@ -107,7 +108,8 @@ TEST(CliCompare, AFailingStrategyIsListedNotAnError)
   writeMesh(slantedTube(40.0, 12.0, 0.0, 120, 6), dir / "short.stl");
   const auto out = dir / "cmp";
   const CliRun r = runCli({"compare", (dir / "short.stl").string(), "-o", out.string()});
-  ASSERT_EQ(r.exitCode, 0) << r.err << r.out;
+  ASSERT_EQ(r.exitCode, 4) << r.err << r.out;
+  EXPECT_NE(r.err.find("no strategy plans this part feasibly"), std::string::npos) << r.err;
   std::ifstream in(out / "compare.json");
   const nlohmann::json report = nlohmann::json::parse(in);
   const nlohmann::json* iso = find(report, "decomposer.isovalue");

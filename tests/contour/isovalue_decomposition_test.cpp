@@ -217,7 +217,7 @@ TEST(IsovalueDecomposition, RefusesAPartThatSplits)
     const std::string what = e.what();
     EXPECT_NE(what.find("the part splits into 2 branches at field value 5."), std::string::npos) << what;
     EXPECT_NE(what.find("about z = 5."), std::string::npos) << what;
-    EXPECT_NE(what.find("mono-branch parts only"), std::string::npos) << what;
+    EXPECT_NE(what.find("narrower than a branch Spira plans on its own"), std::string::npos) << what;
     EXPECT_FALSE(e.hint().empty());
   }
 }

@@ -139,7 +139,7 @@ TEST(DecomposerEnvelope, RefusesAPartWhoseSkeletonDoesNotRise)
     FAIL() << "an arch was decomposed by envelope projection";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("does not rise steadily"), std::string::npos) << e.what();
-    EXPECT_NE(e.hint().find("decomposer.isovalue"), std::string::npos) << e.hint();
+    EXPECT_NE(e.hint().find("--strategy isovalue"), std::string::npos) << e.hint();
   }
 }
 

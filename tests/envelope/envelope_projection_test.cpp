@@ -127,7 +127,7 @@ TEST(EnvelopeProjection, AnOverhangFailsWithItsHeightAndAngleWhileIsoValuesSucce
     EXPECT_NE(what.find("angle "), std::string::npos) << what;
     EXPECT_NE(what.find("overhang"), std::string::npos) << what;
     EXPECT_NE(what.find("60 of 60 generatrices"), std::string::npos) << what;
-    EXPECT_NE(e.hint().find("decomposer.isovalue"), std::string::npos) << e.hint();
+    EXPECT_NE(e.hint().find("--strategy isovalue"), std::string::npos) << e.hint();
     EXPECT_NE(e.hint().find("geodesic"), std::string::npos) << e.hint();
   }
 

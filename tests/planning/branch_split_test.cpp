@@ -114,7 +114,9 @@ TEST(BranchSplit, YTubeSplitsIntoTrunkAndTwoArmsAtTheCrotch)
   EXPECT_EQ(s.branches, 2u);
   EXPECT_EQ(s.piece, 0);
   EXPECT_NEAR(s.branchBase - s.trunkTop, d.junctionGap, 1e-9);
-  EXPECT_NEAR(d.junctionGap, 4.0 * m.meanEdgeLength(), 1e-9);  // 4 edges > h = 2 mm here
+  EXPECT_NEAR(d.junctionGap, 0.5 * 1.8, 1e-9);  // half the thinnest deposit
+  for (size_t k : {1, 2}) EXPECT_NEAR(d.pieces[k].supportGap, d.junctionGap, 1e-9);
+  EXPECT_EQ(d.pieces[0].supportGap, 0.0);
 
   // Trunk first, standing on the substrate; the arms on it, left (x < 0) then right.
   const BranchPiece& trunk = d.pieces[0];

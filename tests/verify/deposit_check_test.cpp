@@ -163,13 +163,19 @@ TEST(DepositCheck, UncoveredBandAboveTheLastRingIsMeasured)
   EXPECT_NE(r.summary().find("not covered"), std::string::npos) << r.summary();
 }
 
-TEST(DepositCheck, SubPathChangeWithTheArcOnIsAJump)
+// Each sub-path has its own arc start and stop: a branch starting where its sub-path starts is no
+// jump, and it stands on what the earlier sub-paths laid.
+TEST(DepositCheck, SubPathsAreSeparateArcsOnEarlierMaterial)
 {
-  Trajectory t = cylinderSpiral(4);
-  for (size_t i = 2 * kPointsPerRing; i < t.size(); ++i) t.points[i].path = 1;
+  Trajectory t = cylinderSpiral(6);
+  for (size_t i = 3 * kPointsPerRing; i < t.size(); ++i) t.points[i].path = 1;
   const DepositCheckReport r = check(t);
-  ASSERT_EQ(r.count(DepositDefect::Jump), 1u);
-  EXPECT_EQ(r.flags.front().point, size_t(2 * kPointsPerRing));
+  EXPECT_TRUE(r.feasible) << r.summary();
+  // Lifted by 10 mm, the second sub-path starts in mid-air, still without a jump.
+  for (size_t i = 3 * kPointsPerRing; i < t.size(); ++i) t.points[i].position.z() += 10.0;
+  const DepositCheckReport lifted = check(t);
+  EXPECT_EQ(lifted.count(DepositDefect::Jump), 0u);
+  EXPECT_EQ(lifted.count(DepositDefect::Unsupported), size_t(kPointsPerRing));
 }
 
 }  // namespace

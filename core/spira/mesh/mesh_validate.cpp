@@ -192,8 +192,8 @@ void classify(MeshReport& r, size_t topologyFaces)
     r.classReason = "2 boundary loops: an open wall (a tube or funnel) from its base edge to its top edge";
   } else {
     r.classReason = std::to_string(loops) +
-                    " boundary loops: a branching wall (a Y-piece or a junction), planned as one spiral per "
-                    "branch; a wall with a hole in its side cannot be planned";
+                    " boundary loops: the part has a hole or several branches; a branching wall (a Y-piece, a "
+                    "junction) is planned as one spiral per branch, a hole in a wall cannot be planned";
   }
 }
 

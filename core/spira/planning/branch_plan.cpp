@@ -140,6 +140,7 @@ void planBranchPieces(const PluginRegistry& registry, const PlanRequest& whole, 
     PlanRequest sub(piece.mesh, piece.report);
     sub.substrateZ = whole.substrateZ;
     sub.lowerLoopOverride = piece.lowerLoop;
+    sub.baseSupportGap = piece.supportGap;
     sub.decomposerId = whole.decomposerId;
     sub.closureFinderId = whole.closureFinderId;
     sub.params = whole.params;

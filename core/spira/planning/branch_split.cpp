@@ -194,6 +194,7 @@ class Splitter {
     out_.saddles.push_back(record);
     out_.gapArea += cut.gapArea;
     for (BranchPiece& b : cut.branches) {
+      b.supportGap = 2.0 * half;
       // Each branch is scanned with the distance from its own lower edge, as if it stood alone.
       const std::vector<int> bottom = b.report.boundaryLoops[static_cast<size_t>(b.lowerLoop)].vertices;
       b.field = heatGeodesicDistance(b.mesh, bottom);
@@ -220,8 +221,7 @@ BranchDecomposition splitIntoMonoBranches(const TriangleMesh& mesh, const std::v
                      "compute the geodesic distance from the base on this mesh");
   BranchDecomposition out;
   out.field = baseField ? *baseField : heatGeodesicDistance(mesh, base, HeatDistanceOptions{}, progress);
-  out.junctionGap = options.junctionGap > 0 ? options.junctionGap
-                                            : std::max(options.nominalHeight, 4.0 * mesh.meanEdgeLength());
+  out.junctionGap = options.junctionGap > 0 ? options.junctionGap : 0.5 * options.thinnestDeposit;
 
   std::vector<int> all(mesh.faceCount());
   for (size_t f = 0; f < all.size(); ++f) all[f] = static_cast<int>(f);

@@ -16,6 +16,9 @@ struct BranchPiece {
   int parent = -1;            // the piece it stands on (-1: on the substrate)
   int depth = 0;              // number of splits below it
   double lowerLevel = 0.0;    // `field` on its lower edge (lowest value)
+  // Geodesic distance from its lower edge down to the upper edge of the piece it stands on (the
+  // junction gap it has to bridge), mm; 0 for the piece on the substrate.
+  double supportGap = 0.0;
   double area = 0.0;          // mm^2
   bool trunk = false;         // the part below a split (or the whole part when nothing splits)
 };
@@ -34,10 +37,11 @@ struct BranchSaddle {
 
 struct BranchSplitOptions {
   double minPerimeter = 0.0;  // shortest contour counted as a branch (mm); <= 0: 3 mean edges
-  // Height of the junction gap (mm of geodesic distance); <= 0 picks max(nominalHeight, 4 mean
-  // edge lengths).
+  // Height of the junction gap (mm of geodesic distance); <= 0 picks half the thinnest deposit, so
+  // that a branch's first ring, laid h_min to h_max above the trunk's last, still lies on the branch.
   double junctionGap = 0.0;
   double nominalHeight = 2.0;  // h, mm
+  double thinnestDeposit = 1.8;  // h_min, mm
   // The cuts follow the distance smoothed by one implicit heat step of time smoothing * h^2
   // (field_smoothing.h); 0 cuts the raw distance.
   double smoothing = 16.0;
@@ -61,11 +65,11 @@ struct BranchDecomposition {
 // are split the same way from their own lower edge.
 //
 // Junction rule. A cut at the saddle itself would pinch (a figure-of-eight through the saddle
-// vertex), and branches that start from a kinked edge get kinked first revolutions. So the trunk
-// ends at saddle - g/2, where its upper edge is one clean loop, and each branch (a connected
-// component of what lies above) starts at saddle + g/2, where it has a loop of its own. The band of
-// height g in between, around the crotch, is not deposited: the junction gap, reported with its
-// area, for the bead to bridge. Both cuts follow the distance smoothed at the scale of a few
+// vertex). So the trunk ends at saddle - g/2, where its upper edge is one clean loop, and each
+// branch (a connected component of what lies above) starts at saddle + g/2, where it has a loop of
+// its own. The band of height g in between, around the crotch, is the junction gap: each branch
+// records it (supportGap) and lays its first ring measured from the trunk's top, across the gap,
+// so the gap is built, not left (g is below h_min, so that ring still lies on the branch). Both cuts follow the distance smoothed at the scale of a few
 // edges: the heat method's distance wobbles from face to face on meshes with slivers and a level
 // line of it zig-zags, which a spiral started on it would repeat; the saddle is still bisected on
 // the raw distance, and reported as such.

@@ -73,6 +73,21 @@ void computeField(const PlanRequest& request, PlanOutput& out, Progress& progres
   }
 }
 
+// A part standing on material `gap` below its lower edge: each generatrix starts that much lower,
+// straight on from its first segment, so the spiral's first ring is laid h_min .. h_max above the
+// material, not above the edge. No point lands on the extension as long as gap < h_min.
+void extendBelowBase(Generatrices& g, double gap)
+{
+  for (size_t k = 0; k < g.lines.size(); ++k) {
+    Polyline& line = g.lines[k];
+    if (line.size() < 2) continue;
+    const Vec3 down = (line[0] - line[1]).normalized();
+    line.insert(line.begin(), line[0] + gap * down);
+    if (k < g.normals.size() && !g.normals[k].empty())
+      g.normals[k].insert(g.normals[k].begin(), g.normals[k][0]);
+  }
+}
+
 // Closure point, generatrices, spiral and process channels of a part whose field is computed.
 void finishMonoBranch(const PluginRegistry& registry, const PlanRequest& request, const Settings& settings,
                       PlanOutput& out, StageClock& clock, Progress& progress)
@@ -103,6 +118,7 @@ void finishMonoBranch(const PluginRegistry& registry, const PlanRequest& request
   DecomposeResult decomposition = decomposer.decompose(input, settings.decomposerParams, dp);
   out.generatrices = std::move(decomposition.generatrices);
   out.warnings.insert(out.warnings.end(), decomposition.warnings.begin(), decomposition.warnings.end());
+  if (request.baseSupportGap > 0.0) extendBelowBase(out.generatrices, request.baseSupportGap);
   clock.lap("decomposition");
 
   SubProgress sp(progress, 0.8, 0.95, "spiral");
@@ -211,6 +227,7 @@ PlanOutput planPart(const PluginRegistry& registry, const PlanRequest& request, 
   BranchSplitOptions split;
   split.minPerimeter = perimeter;
   split.nominalHeight = settings.spiral.h;
+  split.thinnestDeposit = settings.spiral.hMin;
   const std::vector<double>* known =
       !distance.empty() ? &distance : (out.fieldKind == "geodesic_distance" ? &out.field : nullptr);
   SubProgress sp(progress, 0.0, 0.3, "branches");
@@ -219,13 +236,13 @@ PlanOutput planPart(const PluginRegistry& registry, const PlanRequest& request, 
   clock.lap("branches");
   if (pieces.pieces.size() < 2) {
     if (out.topology.branched)
-      throw InputError("the part cannot be planned: it has " +
-                           std::to_string(request.report.boundaryLoops.size()) +
-                           " free edges but its walls do not part into branches, so at least one free edge "
-                           "is a hole in a wall",
-                       "close the hole(s) in the CAD or mesh tool ('spira-cli info' lists the loops and their "
-                       "heights): Spira plans walls with one free edge on the substrate, at most one on top, "
-                       "and one more per branch");
+      throw InputError(
+          "the part cannot be planned: it has " + std::to_string(request.report.boundaryLoops.size()) +
+              " free edges but its walls do not part into branches, so at least one free edge "
+              "is a hole in a wall",
+          "close the hole(s) in the CAD or mesh tool ('spira-cli info' lists the loops and their "
+          "heights): Spira plans walls with one free edge on the substrate, at most one on top, "
+          "and one more per branch");
     finishMonoBranch(registry, request, settings, out, clock, progress);
     judgeDeposits(request, settings, out, progress);
     clock.lap("deposit check");

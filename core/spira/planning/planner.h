@@ -26,6 +26,9 @@ struct PlanRequest {
   const MeshReport& report;  // validateMesh(mesh)
   double substrateZ = 0.0;
   int lowerLoopOverride = -1;
+  // The material this part stands on lies this far below its lower edge, along the surface (a
+  // branch above a junction gap), mm: its first ring is laid measured from there.
+  double baseSupportGap = 0.0;
   std::string decomposerId = "decomposer.isovalue";
   std::string closureFinderId = "closure.max_min_geodesic";
   std::map<std::string, ParamSet> params;

@@ -68,8 +68,9 @@ PathLayout layOut(const Trajectory& path, const DepositCheckSettings& s, std::ve
     if (follows) {
       const TrajectoryPoint& prev = path.points[i - 1];
       const double step = (p.position - prev.position).norm();
-      const bool otherPath = prev.path != p.path;
-      if (otherPath || step > jumpLength[p.path] || !std::isfinite(step)) {
+      if (prev.path != p.path) {
+        newRun = true;  // each sub-path has its own arc start and stop
+      } else if (step > jumpLength[p.path] || !std::isfinite(step)) {
         L.jumped[i] = 1;
         flags.push_back({i, DepositDefect::Jump, step, p.position});
         newRun = true;

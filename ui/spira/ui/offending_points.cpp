@@ -62,7 +62,8 @@ void listDepositFlags(const Lister& lister, const Results& results)
     const QString mm = h.is_number() ? loc.toString(h.get<double>(), 'f', 2) : QString();
     QString text;
     if (kind == "below_deposit")
-      text = QObject::tr("it lies %1 mm under material already laid.").arg(loc.toString(-h.get<double>(), 'f', 2));
+      text = QObject::tr("it lies %1 mm under material already laid.")
+                 .arg(loc.toString(-h.get<double>(), 'f', 2));
     else if (kind == "thin")
       text = QObject::tr("the bead under it is only %1 mm below: thinner than the process lays.").arg(mm);
     else if (kind == "thick")
@@ -70,15 +71,17 @@ void listDepositFlags(const Lister& lister, const Results& results)
     else if (kind == "jump")
       text = QObject::tr("reached by a %1 mm jump with the arc on.").arg(mm);
     else
-      text = mm.isEmpty() ? QObject::tr("nothing below it: the bead would be laid in mid-air.")
-                          : QObject::tr("the material below is %1 mm away: the bead would be laid in mid-air.")
-                                .arg(mm);
+      text =
+          mm.isEmpty()
+              ? QObject::tr("nothing below it: the bead would be laid in mid-air.")
+              : QObject::tr("the material below is %1 mm away: the bead would be laid in mid-air.").arg(mm);
     if (what.count(i) == 0) flagged.push_back(i);
     what[i] += (what[i].isEmpty() ? QString() : QStringLiteral(" ")) + text;
   }
   lister(
       flagged, [&](size_t i) { return what[i]; },
-      QObject::tr("... and %1 more point(s) the deposit check rejected (report.json's deposit_check lists them)."));
+      QObject::tr(
+          "... and %1 more point(s) the deposit check rejected (report.json's deposit_check lists them)."));
 }
 
 }  // namespace
