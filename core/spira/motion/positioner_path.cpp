@@ -1,6 +1,8 @@
 #include "spira/motion/positioner_path.h"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "spira/base/units.h"
 #include "spira/kinematics/angle_wrap.h"
@@ -32,7 +34,43 @@ TableAxis rotationAxisInTable(const TiltRotatePositioner& positioner)
   return {tableJoint.translation(), (tableJoint.linear() * chain.joint(1).axis).normalized()};
 }
 
+// The whole turns k that put [lo + 2 pi k, hi + 2 pi k] inside [lower, upper], nearest 0, if any.
+bool fewestTurns(double lo, double hi, double lower, double upper, int& turns)
+{
+  const double fewest = std::ceil((lower - lo) / (2.0 * kPi) - 1e-12);
+  const double most = std::floor((upper - hi) / (2.0 * kPi) + 1e-12);
+  if (!(fewest <= most) || !std::isfinite(fewest) || !std::isfinite(most)) return false;
+  turns = static_cast<int>(std::clamp(0.0, fewest, most));
+  return true;
+}
+
 }  // namespace
+
+std::array<int, 2> windToFit(std::vector<Eigen::Vector2d>& axes, const std::vector<bool>& reached,
+                             const KinematicChain& chain, double marginRad)
+{
+  std::array<int, 2> out{};
+  for (Eigen::Index k = 0; k < 2; ++k) {
+    const ChainJoint& joint = chain.joint(static_cast<size_t>(k));
+    if (!(joint.upper - joint.lower >= 2.0 * kPi) || !std::isfinite(joint.upper - joint.lower)) continue;
+    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+    for (size_t i = 0; i < axes.size(); ++i)
+      if (reached[i]) {
+        lo = std::min(lo, axes[i][k]);
+        hi = std::max(hi, axes[i][k]);
+      }
+    if (!(lo <= hi)) continue;
+    int turns = 0;
+    if (!fewestTurns(lo, hi, joint.lower + marginRad, joint.upper - marginRad, turns) &&
+        !fewestTurns(lo, hi, joint.lower, joint.upper, turns))
+      turns =
+          static_cast<int>(std::round((0.5 * (joint.lower + joint.upper) - 0.5 * (lo + hi)) / (2.0 * kPi)));
+    if (turns == 0) continue;
+    for (Eigen::Vector2d& e : axes) e[k] += 2.0 * kPi * turns;
+    out[static_cast<size_t>(k)] = turns;
+  }
+  return out;
+}
 
 PositionerPath placeOnPositioner(const Trajectory& path, const JointPathSetup& setup,
                                  const MotionParams& params, Progress& progress)
@@ -62,6 +100,7 @@ PositionerPath placeOnPositioner(const Trajectory& path, const JointPathSetup& s
     out.axes[i] = e;
     previousAzimuth = azimuth;
   }
+  out.turns = windToFit(out.axes, out.reached, positioner.chain(), degToRad(params.limitMarginDeg));
   return out;
 }
 
