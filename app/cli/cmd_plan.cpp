@@ -98,7 +98,7 @@ int cmdPlan(const std::vector<std::string>& argv)
            "into DIR (the flags of the exporter and of the path preparation are listed with\n"
            "--export FORMAT --help).\n"
            "Exit code 4 (files still written) when the plan leaves the process window, or a point is\n"
-           "unreachable or collides.\n"
+           "unreachable or collides, or an axis passes its speed limit (see --allow-slowdown).\n"
         << paramFlagsHelp(targets);
     return kOk;
   }
@@ -144,8 +144,7 @@ int cmdPlan(const std::vector<std::string>& argv)
   std::optional<PlanMotion> motion;
   if (cell) {
     const auto tm = std::chrono::steady_clock::now();
-    MotionSettings ms;
-    ms.beadWidth = processSettingsFrom(planFlags.values["process"]).beadWidth;
+    MotionSettings ms = motionSettingsFrom(planFlags.values["process"], planFlags.values["spiral"]);
     ms.substrateZ = req.substrateZ;
     ms.resolveCollisions = !keepCollisions;
     ms.part = &part.mesh;
