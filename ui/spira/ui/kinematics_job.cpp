@@ -61,15 +61,15 @@ KinematicsJobResult runKinematics(const DocumentState& snapshot, const Trajector
           "change the part's placement.");
     if (!motion.withinJointSpeeds) {
       const nlohmann::json& speed = report["joint_speed"];
-      out.warnings.push_back(
-          speed.value("allow_slowdown", false)
-              ? "Where the axes cannot keep up with the travel speed, the controller's slowing down thickens "
-                "the "
-                "deposit beyond the window at " +
-                    std::to_string(motion.slowdown.outsideWindow) + " point(s)."
-              : "Axis " + speed.value("axis", std::string()) +
-                    " would pass its speed limit at the planned travel speed. Let the controller slow down "
-                    "(process limits) or slow the process down.");
+      if (speed.value("allow_slowdown", false))
+        out.warnings.push_back(
+            "Where the axes cannot keep up with the travel speed the controller slows down, "
+            "and the deposit thickens beyond the window at " +
+            std::to_string(motion.slowdown.outsideWindow) + " point(s).");
+      else
+        out.warnings.push_back("Axis " + speed.value("axis", std::string()) +
+                               " would pass its speed limit at the planned travel speed. Let the controller "
+                               "slow down (Process, Limits) or plan a slower process.");
     }
     if (motion.unresolvedCollisions > 0)
       out.warnings.push_back("The torch collides at " + std::to_string(motion.unresolvedCollisions) +
