@@ -77,28 +77,31 @@ PositionerPath placeOnPositioner(const Trajectory& path, const JointPathSetup& s
 {
   const TiltRotatePositioner& positioner = *setup.positioner;
   const TableAxis axis = rotationAxisInTable(positioner);
-  const Vec3 reference = axis.direction.unitOrthogonal();
   const double tolerance = degToRad(params.buildTiltToleranceDeg);
   PositionerPath out;
   out.axes.resize(path.size());
   out.reached.assign(path.size(), false);
   Eigen::Vector2d e = setup.positionerSeed;
-  double previousAzimuth = 0.0;
+  Vec3 previous = Vec3::Zero();  // the previous point about the axis: its offset off the axis
   for (size_t i = 0; i < path.size(); ++i) {
     if (i % kCancelStride == 0) progress.checkCancel();
     const TrajectoryPoint& point = path.points[i];
     const Vec3 buildInTable = (setup.tablePart.linear() * point.build).normalized();
-    const double azimuth =
-        angleAbout(axis.direction, reference, setup.tablePart * point.position - axis.point);
-    // The table turns the part by the point's own turn about the axis, so the point stays put.
-    const double target =
-        params.turntableFollowsPoint && i > 0 ? e[1] - wrapToPi(azimuth - previousAzimuth) : e[1];
+    Vec3 offAxis = setup.tablePart * point.position - axis.point;
+    offAxis -= offAxis.dot(axis.direction) * axis.direction;
+    // The table turns the part by the point's own turn about the axis, so the point stays put;
+    // unless the step turns it by a radian or more (an end within a step's length of the axis, a
+    // closure point on it), where that turn is noise and turning the table hardly moves the point.
+    double target = e[1];
+    const double step = i > 0 ? (point.position - path.points[i - 1].position).norm() : 0.0;
+    if (params.turntableFollowsPoint && i > 0 && std::min(offAxis.norm(), previous.norm()) > step)
+      target -= angleAbout(axis.direction, previous, offAxis);
     const std::optional<Eigen::Vector2d> solved =
         positioner.solveWithin(buildInTable, tolerance, target, e[0]);
     if (solved) e = *solved;
     out.reached[i] = solved.has_value();
     out.axes[i] = e;
-    previousAzimuth = azimuth;
+    previous = offAxis;
   }
   out.turns = windToFit(out.axes, out.reached, positioner.chain(), degToRad(params.limitMarginDeg));
   return out;
