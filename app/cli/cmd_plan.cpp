@@ -119,8 +119,9 @@ int cmdPlan(const std::vector<std::string>& argv)
            "--export FORMAT --help).\n"
            "The plan is feasible when the deposit check (docs/deposit-check.md) finds every bead of the\n"
            "path supported inside the process window, no jump with the arc on and the surface covered.\n"
-           "Exit code 4 when it is not, or a point is unreachable or collides: trajectory.csv and\n"
-           "report.json are still written (to inspect), the robot program is not.\n\n"
+           "Exit code 4 when it is not, or a point is unreachable or collides, or an axis passes its\n"
+           "speed limit (see --allow-slowdown): trajectory.csv and report.json are still written (to\n"
+           "inspect), the robot program is not.\n\n"
         << kPlacementHelp << paramFlagsHelp(targets);
     return kOk;
   }
@@ -176,8 +177,7 @@ int cmdPlan(const std::vector<std::string>& argv)
   std::optional<PlanMotion> motion;
   if (cell) {
     const auto tm = std::chrono::steady_clock::now();
-    MotionSettings ms;
-    ms.beadWidth = processSettingsFrom(planFlags.values["process"]).beadWidth;
+    MotionSettings ms = motionSettingsFrom(planFlags.values["process"], planFlags.values["spiral"]);
     ms.substrateZ = req.substrateZ;
     ms.resolveCollisions = !keepCollisions;
     ms.part = &part.mesh;

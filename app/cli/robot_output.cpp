@@ -41,6 +41,39 @@ std::map<std::string, std::string> programHeader(const std::string& partFile, co
   return h;
 }
 
+namespace {
+
+// An infinite value (a turn on the spot) is stored as null.
+std::string number(const nlohmann::json& v)
+{
+  std::ostringstream s;
+  s << std::fixed << std::setprecision(3);
+  if (v.is_number())
+    s << v.get<double>();
+  else
+    s << "infinite";
+  return s.str();
+}
+
+void printJointSpeed(const nlohmann::json& js, std::ostream& out)
+{
+  const size_t over = js.value("points_over_limit", size_t{0});
+  if (over == 0) return;
+  out << "joint speed: " << over
+      << " point(s) need an axis past its speed limit at the planned travel speed (" << js.value("axis", "")
+      << " at " << number(js["max_percent"]) << " % at point " << js["point"].dump() << ")";
+  if (!js.contains("slowdown")) {
+    out << ": INFEASIBLE (--allow-slowdown lets the controller slow down there)\n";
+    return;
+  }
+  const nlohmann::json& sd = js["slowdown"];
+  out << "; the controller slows down there and the deposit thickens (" << sd.value("height_model", "")
+      << ") to " << number(sd["max_height_mm"]) << " mm at most, at " << sd.value("outside_window", size_t{0})
+      << " point(s) outside the window\n";
+}
+
+}  // namespace
+
 void printMotionSummary(const nlohmann::json& r, std::ostream& out)
 {
   out << std::fixed << std::setprecision(3);
@@ -51,6 +84,11 @@ void printMotionSummary(const nlohmann::json& r, std::ostream& out)
       << r.value("min_joint_limit_margin_axis", "") << "), dexterity >= " << r.value("min_dexterity", 0.0)
       << ", joint speed <= " << 100.0 * r.value("max_joint_speed_ratio", 0.0) << " % of the limit ("
       << r.value("max_joint_speed_axis", "") << ")\n";
+  if (r.contains("positioner_range_deg"))
+    for (const auto& [axis, range] : r["positioner_range_deg"].items())
+      out << "positioner " << axis << " " << range[0].get<double>() << " .. " << range[1].get<double>()
+          << " deg\n";
+  printJointSpeed(r.value("joint_speed", nlohmann::json::object()), out);
   out << "torch collisions: " << r.value("collisions_detected", 0) << " detected, "
       << r.value("collisions_resolved", 0) << " resolved by tilting, " << r.value("collisions", 0)
       << " left\n";

@@ -98,7 +98,7 @@ TEST_P(ExportChecks, UnexecutablePointsAreRefusedUnlessForced)
   try {
     test::runExporter(c.id, plan, &joints, ParamSet(), refused.path());
     ADD_FAILURE() << "export was not refused";
-  } catch (const InputError& e) {
+  } catch (const InfeasibleError& e) {
     EXPECT_NE(std::string(e.what()).find("3 of 37 points"), std::string::npos) << e.what();
     EXPECT_NE(std::string(e.what()).find("point 5 unreachable"), std::string::npos) << e.what();
     EXPECT_NE(e.hint().find("force"), std::string::npos);

@@ -32,7 +32,7 @@ TEST(PlannedCollisions, AreRefusedUnlessForcedAndThenCommentedWhereTheyAre)
   try {
     exportTrajectory(builtinRegistry(), plan, job, refused.path(), progress);
     ADD_FAILURE() << "a plan with collisions was exported";
-  } catch (const InputError& e) {
+  } catch (const InfeasibleError& e) {
     EXPECT_NE(std::string(e.what()).find("in collision"), std::string::npos) << e.what();
   }
   EXPECT_TRUE(test::filesIn(refused.path()).empty());

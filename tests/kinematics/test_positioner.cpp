@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -96,6 +97,84 @@ TEST(TiltRotatePositioner, DirectionAlongTheTableNormalKeepsTheRotation)
   ASSERT_TRUE(e);
   EXPECT_NEAR((*e)[0], 0.0, 1e-12);
   EXPECT_NEAR((*e)[1], 1.3, 1e-12);
+}
+
+// The angle (rad) between the build direction b turned by the positioner at e and the vertical.
+double leanAfter(const TiltRotatePositioner& p, const Vec3& b, const Axes& e)
+{
+  return std::acos(std::clamp((p.forward(e).linear() * b).normalized().z(), -1.0, 1.0));
+}
+
+TEST(TiltRotatePositioner, WithinAToleranceTheRotationKeepsToItsTarget)
+{
+  const TiltRotatePositioner p = positioner();
+  const double tolerance = degToRad(2.0);
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  for (int k = 0; k < 500; ++k) {
+    // A build direction 0 .. 10 deg off the table normal, a target rotation anywhere.
+    const double lean = degToRad(10.0 * unit(rng)), azimuth = 2.0 * kPi * unit(rng);
+    const Vec3 b(std::sin(lean) * std::cos(azimuth), std::sin(lean) * std::sin(azimuth), std::cos(lean));
+    const double target = 20.0 * kPi * (unit(rng) - 0.5);
+    const std::optional<Axes> e = p.solveWithin(b, tolerance, target, 0.0);
+    ASSERT_TRUE(e);
+    ASSERT_LE(leanAfter(p, b, *e), tolerance + 1e-9) << k;
+    if (lean <= tolerance) {
+      EXPECT_EQ((*e)[1], target);  // free: the rotation is left where it was aimed
+      continue;
+    }
+    // No rotation nearer the target keeps the direction within the tolerance: scan 0.05 deg steps
+    // between the target and the answer.
+    const double found = (*e)[1] - target;
+    EXPECT_LE(std::abs(found), kPi / 2.0 + 1e-9);  // one of the two exact branches is that near
+    // With a tolerance of 90 deg every rotation is allowed, and the tilt is the best for it.
+    const auto bestLean = [&](double rotation) {
+      const std::optional<Axes> kept = p.solveWithin(b, kPi / 2.0, rotation, 0.0);
+      EXPECT_TRUE(kept && (*kept)[1] == rotation);
+      return kept ? leanAfter(p, b, *kept) : 0.0;
+    };
+    const double step = std::copysign(degToRad(0.05), found);
+    for (double f = 0.0; std::abs(f) < std::abs(found) - degToRad(0.1); f += step)
+      ASSERT_GT(bestLean(target + f), tolerance) << k << " at " << f;
+  }
+}
+
+TEST(TiltRotatePositioner, TheTiltIsTheBestForTheRotationItKeeps)
+{
+  const TiltRotatePositioner p = positioner();
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  for (int k = 0; k < 50; ++k) {
+    const Vec3 b = randomDirection(rng);
+    const double rotation = 2.0 * kPi * unit(rng);
+    // With a tolerance of 90 deg no direction needs turning: the rotation is kept.
+    const std::optional<Axes> e = p.solveWithin(b, kPi / 2.0, rotation, 0.0);
+    ASSERT_TRUE(e);
+    EXPECT_EQ((*e)[1], rotation);
+    double best = kPi;
+    for (int t = -18000; t <= 18000; ++t)
+      best = std::min(best, leanAfter(p, b, Axes(degToRad(0.01 * t), rotation)));
+    EXPECT_LE(leanAfter(p, b, *e), best + 1e-9) << k;
+  }
+}
+
+TEST(TiltRotatePositioner, WithoutToleranceItIsTheExactBranchNearestTheTarget)
+{
+  const TiltRotatePositioner p = positioner();
+  std::mt19937 rng(11);
+  for (int k = 0; k < 500; ++k) {
+    const Vec3 b = randomDirection(rng);
+    const double target = 4.0;
+    const std::optional<Axes> e = p.solveWithin(b, 0.0, target, 0.3);
+    ASSERT_TRUE(e);
+    EXPECT_LT(leanAfter(p, b, *e), 1e-6);
+    double nearest = 1e9;  // the exact branches' rotations, on the turn nearest the target
+    for (const Axes& exact : p.solveAll(b))
+      nearest = std::min(nearest, std::abs(nearestBranch(exact[1], target) - target));
+    EXPECT_NEAR(std::abs((*e)[1] - target), nearest, 1e-6);
+    EXPECT_LE(nearest, kPi / 2.0 + 1e-9);
+  }
+  EXPECT_THROW(p.solveWithin(Vec3::UnitZ(), -0.1, 0.0, 0.0), InputError);
 }
 
 TEST(TiltRotatePositioner, RefusesChainsThatAreNotTwoAxes)

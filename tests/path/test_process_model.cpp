@@ -142,6 +142,16 @@ TEST(ProcessModel, CalibrationTableInterpolatesPiecewiseLinearly)
     EXPECT_NEAR(p.wireFeed, ps.wireFeed * 3.0 / table.travelSpeed(p.height), 1e-9);
 }
 
+TEST(ProcessModel, CalibrationTableReadsBackTheHeightOfASpeed)
+{
+  const CalibrationTable table = sevenBeads();
+  for (double h = 1.7; h <= 2.3; h += 0.01) EXPECT_NEAR(table.height(table.travelSpeed(h)), h, 1e-12) << h;
+  EXPECT_DOUBLE_EQ(table.height(3.3), 1.8);
+  EXPECT_NEAR(table.height(0.5 * (3.1 + 2.95)), 1.95, 1e-12);
+  EXPECT_DOUBLE_EQ(table.height(9.0), 1.7);  // beyond the table: end values
+  EXPECT_DOUBLE_EQ(table.height(1.0), 2.3);
+}
+
 TEST(ProcessModel, CalibrationTableRejectsNonMonotoneSpeeds)
 {
   try {

@@ -203,10 +203,11 @@ void refuseOrFlag(const PathOptions& options, ExportPath& path)
   const std::string what = std::to_string(path.flaggedCount) + " of " + std::to_string(path.points.size()) +
                            " points cannot be executed as planned (" + listed +
                            (path.flaggedCount > shown ? "; ..." : "") + ")";
+  // The plan and its inputs are valid; the cell just cannot execute it: infeasible, not bad input.
   if (!options.force)
-    throw InputError(what,
-                     "fix the cell or the plan, or set 'force' to export anyway with a warning "
-                     "comment at each of these moves");
+    throw InfeasibleError(what,
+                          "fix the cell or the plan, or set 'force' to export anyway with a warning "
+                          "comment at each of these moves");
   path.warnings.push_back("forced export: " + what + "; each such move carries a warning comment");
 }
 

@@ -78,8 +78,9 @@ struct ExportPath {
 // (travel moves) and the move between sub-paths run with the arc off and write no process output.
 // Throws InputError when the plan
 // cannot be exported: fewer than two points, no deposition (arc on at fewer than two points),
-// non-finite or non-positive channels, a joint trajectory of another size or controller, or
-// (unless options.force) points that are unreachable, in collision or outside joint limits.
+// non-finite or non-positive channels, a joint trajectory of another size or controller; and
+// InfeasibleError (unless options.force) for points that are unreachable, in collision or outside
+// joint limits.
 // Recoverable findings (joint speeds over the limits, configuration changes, arc gaps) are
 // returned as warnings.
 ExportPath prepareExportPath(const ExportInput& input, const PathOptions& options, Progress& progress);

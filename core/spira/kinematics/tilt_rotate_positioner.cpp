@@ -1,5 +1,6 @@
 #include "spira/kinematics/tilt_rotate_positioner.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "spira/base/error.h"
@@ -88,6 +89,63 @@ std::optional<TiltRotatePositioner::Axes> TiltRotatePositioner::solve(const Vec3
     }
   }
   return best;
+}
+
+std::optional<TiltRotatePositioner::Axes> TiltRotatePositioner::solveWithin(const Vec3& directionInTable,
+                                                                            double tolerance, double rotation,
+                                                                            double previousTilt,
+                                                                            const Vec3& up) const
+{
+  if (!directionInTable.allFinite() || !up.allFinite() || directionInTable.norm() < 1e-12 ||
+      up.norm() < 1e-12 || !std::isfinite(rotation) || !std::isfinite(previousTilt) ||
+      !std::isfinite(tolerance) || tolerance < 0.0)
+    throw InputError("the positioner was asked to turn a zero or invalid direction",
+                     "check the build directions of the path and the positioner seed");
+  const Vec3 x = (tableAtZero_ * directionInTable).normalized();
+  const Vec3 g = up.normalized();
+  const Vec3& w1 = axis1_;
+  const Vec3& w2 = axis2_;
+  // Rotating about w1 keeps a direction's elevation off the plane normal to w1, so after the best
+  // tilt the direction Rot(w2, e2) x lies |asin(s) - asin(w1 . g)| from g, s = w1 . Rot(w2, e2) x.
+  // s = a + rho cos(e2 - eta): the rotations within tolerance are those with s in [sLow, sHigh].
+  const Vec3 along = x.dot(w2) * w2;
+  const Vec3 across = x - along;
+  const double a = w1.dot(along);
+  const double p = w1.dot(across);
+  const double q = w1.dot(w2.cross(across));
+  const double rho = std::hypot(p, q);
+  const double elevation = std::asin(std::clamp(w1.dot(g), -1.0, 1.0));
+  const double sLow = std::sin(std::max(elevation - tolerance, -kPi / 2.0));
+  const double sHigh = std::sin(std::min(elevation + tolerance, kPi / 2.0));
+  constexpr double kSlack = 1e-12;
+  double e2 = rotation;
+  if (rho < kSlack) {
+    if (a < sLow - kSlack || a > sHigh + kSlack) return std::nullopt;
+  } else {
+    const double eta = std::atan2(q, p);
+    const double cLow = std::max((sLow - a) / rho, -1.0);
+    const double cHigh = std::min((sHigh - a) / rho, 1.0);
+    if (cLow > cHigh + kSlack) return std::nullopt;
+    const double u = wrapToPi(rotation - eta);
+    const double c = std::cos(u);
+    if (c < cLow || c > cHigh) {
+      // The nearest edge of the allowed set {u : cos u in [cLow, cHigh]} (one or two arcs).
+      double best = 0.0;
+      bool have = false;
+      for (double edge : {std::acos(std::min(cHigh, 1.0)), std::acos(std::max(cLow, -1.0))})
+        for (double sign : {1.0, -1.0}) {
+          const double step = wrapToPi(sign * edge - u);
+          if (!have || std::abs(step) < std::abs(best)) {
+            best = step;
+            have = true;
+          }
+        }
+      e2 = rotation + best;
+    }
+  }
+  const Vec3 c = Eigen::AngleAxisd(e2, w2) * x;
+  const double e1 = nearestBranch(angleAbout(w1, c, g), previousTilt);
+  return Axes(e1, e2);
 }
 
 }  // namespace spira

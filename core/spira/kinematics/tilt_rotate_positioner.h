@@ -43,6 +43,18 @@ class TiltRotatePositioner {
   std::optional<Axes> solve(const Vec3& directionInTable, const Axes& previous,
                             const Vec3& up = Vec3::UnitZ()) const;
 
+  // Axes that turn `directionInTable` to within `tolerance` (rad, >= 0) of `up`, the rotation (axis
+  // 2) as near `rotation` as that allows, on its 2 pi branch, and the tilt (axis 1) the one that
+  // then brings the direction closest to `up`, on the 2 pi branch nearest `previousTilt`; nothing
+  // when no rotation brings it within the tolerance. With tolerance 0 this is an exact solution.
+  // Why a tolerance: a direction within it of the rotation axis leaves the rotation free, and just
+  // outside it the exact rotation follows the direction's azimuth about the axis, which a small
+  // tilt (a helix's climb, facet noise) leaves ill-defined; the set of rotations that keep the
+  // direction within the tolerance shrinks continuously instead, so the rotation can stay near a
+  // smooth target.
+  std::optional<Axes> solveWithin(const Vec3& directionInTable, double tolerance, double rotation,
+                                  double previousTilt, const Vec3& up = Vec3::UnitZ()) const;
+
  private:
   KinematicChain chain_;
   Vec3 axis1_, axis2_;  // base frame, zero pose

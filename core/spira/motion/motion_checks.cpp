@@ -44,6 +44,13 @@ void checkMotion(const Trajectory& path, const JointTrajectory& joints, const st
                         std::to_string(reached.size()) + ")");
   report.unreachable.clear();
   report.outsideLimits.clear();
+  report.speedRatio.assign(n, 0.0);
+  report.axisSpeeds.clear();
+  if (n > 0) {
+    const AxisValues first = axesOf(joints, joints.points.front());
+    for (size_t j = 0; j < first.count; ++j)
+      report.axisSpeeds.push_back({first.limit[j]->name, 0.0, MotionReport::kNone});
+  }
   for (size_t i = 0; i < n; ++i) {
     const JointPoint& p = joints.points[i];
     if (!reached[i]) {
@@ -87,6 +94,12 @@ void checkMotion(const Trajectory& path, const JointTrajectory& joints, const st
       // A turn on the spot (zero-length segment) needs infinite speed at the planned feed.
       const double ratio =
           dt > 0.0 ? move / dt / maxSpeed : (move > 1e-9 ? std::numeric_limits<double>::infinity() : 0.0);
+      report.speedRatio[i] = std::max(report.speedRatio[i], ratio);
+      MotionReport::AxisSpeed& axis = report.axisSpeeds[j];
+      if (ratio > axis.maxRatio) {
+        axis.maxRatio = ratio;
+        axis.point = i;
+      }
       if (ratio > report.maxSpeedRatio) {
         report.maxSpeedRatio = ratio;
         report.maxSpeedRatioAxis = v.limit[j]->name;

@@ -9,7 +9,8 @@
 namespace spira {
 
 // The per-point checks of a solved motion: fills the reachability lists, limit margins,
-// dexterity, speed ratio and cable twist fields of `report` (the rest is left alone).
+// dexterity, speed ratios (overall, per point, per axis) and cable twist fields of `report` (the
+// rest is left alone).
 // `reached[i]`: point i was reached (motion_report.h); the joint trajectory's limits (controller
 // axes, and positioner axes when it has one) are the ones checked. `path` gives segment lengths
 // and travel speeds. cableTwistLimitDeg 0 = no limit.

@@ -4,18 +4,15 @@
 
 #include "spira/base/error.h"
 #include "spira/kinematics/angle_wrap.h"
+#include "spira/motion/positioner_path.h"
 #include "spira/path/tool_frame.h"
 
 namespace spira {
 
 namespace {
 
-// Below this angle (rad) between the build direction and the table's rotation axis the rotation
-// is free: turning it moves the build direction off the vertical by less than this.
-constexpr double kFreeRotationTolerance = 1e-6;
 // Reference and torch axes closer to opposite than this use parallel transport instead.
 constexpr double kAntipodalCosine = -0.9;
-constexpr size_t kCancelStride = 4096;
 
 // The angle about unit `axis` from `from` to `to` (both projected off the axis).
 double angleAbout(const Vec3& axis, const Vec3& from, const Vec3& to)
@@ -31,53 +28,6 @@ Vec3 minimalRotation(const Vec3& a, const Vec3& b, const Vec3& v)
   const Vec3 k = a.cross(b);
   const double c = a.dot(b);
   return v * c + k.cross(v) + k * (k.dot(v) / (1.0 + c));
-}
-
-// The positioner's rotation axis in its table frame (point and unit direction).
-struct TableAxis {
-  Vec3 point = Vec3::Zero();
-  Vec3 direction = Vec3::UnitZ();
-};
-
-TableAxis rotationAxisInTable(const TiltRotatePositioner& positioner)
-{
-  const KinematicChain& chain = positioner.chain();
-  const Transform tableJoint = chain.tipOffset().inverse();  // T_table_joint2
-  return {tableJoint.translation(), (tableJoint.linear() * chain.joint(1).axis).normalized()};
-}
-
-void placeOnPositioner(const Trajectory& path, const JointPathSetup& setup, const MotionParams& params,
-                       MotionFrames& frames, std::vector<Transform>& basePart, Progress& progress)
-{
-  const TiltRotatePositioner& positioner = *setup.positioner;
-  const TableAxis axis = rotationAxisInTable(positioner);
-  Eigen::Vector2d e = setup.positionerSeed;
-  bool havePrevious = false;
-  double previousAzimuth = 0.0;
-  const Vec3 reference = axis.direction.unitOrthogonal();
-  for (size_t i = 0; i < path.size(); ++i) {
-    if (i % kCancelStride == 0) progress.checkCancel();
-    const TrajectoryPoint& point = path.points[i];
-    const Vec3 buildInTable = (setup.tablePart.linear() * point.build).normalized();
-    const Vec3 pointInTable = setup.tablePart * point.position;
-    const double azimuth = angleAbout(axis.direction, reference, pointInTable - axis.point);
-    const std::optional<Eigen::Vector2d> solved = positioner.solve(buildInTable, e);
-    const bool free = buildInTable.cross(axis.direction).norm() < kFreeRotationTolerance;
-    if (solved) {
-      const double heldRotation = e[1];
-      e = *solved;
-      // The table turns the part by the point's own turn about the axis, so the point stays put.
-      if (free && params.turntableFollowsPoint && havePrevious)
-        e[1] = heldRotation - wrapToPi(azimuth - previousAzimuth);
-      else if (free)
-        e[1] = heldRotation;
-    }
-    havePrevious = true;
-    previousAzimuth = azimuth;
-    frames.positionerReached[i] = solved.has_value();
-    frames.external[i] = e;
-    basePart[i] = setup.basePositioner * positioner.forward(e) * setup.tablePart;
-  }
 }
 
 }  // namespace
@@ -106,7 +56,13 @@ MotionFrames buildMotionFrames(const Trajectory& path, const JointPathSetup& set
   }
 
   std::vector<Transform> basePart(n, setup.basePart);
-  if (setup.positioner) placeOnPositioner(path, setup, params, frames, basePart, progress);
+  if (setup.positioner) {
+    PositionerPath placed = placeOnPositioner(path, setup, params, progress);
+    frames.external = std::move(placed.axes);
+    frames.positionerReached = std::move(placed.reached);
+    for (size_t i = 0; i < n; ++i)
+      basePart[i] = setup.basePositioner * setup.positioner->forward(frames.external[i]) * setup.tablePart;
+  }
 
   Vec3 meanAxis = Vec3::Zero();
   for (size_t i = 0; i < n; ++i) {

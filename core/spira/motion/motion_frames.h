@@ -26,14 +26,14 @@ struct MotionFrames {
   std::vector<Transform> baseTcp0;        // T_base_tcp of toolFrame(point, 0) at the part's pose
   std::vector<double> chartOffset;        // rad, unwrapped along the path
   std::vector<Eigen::Vector2d> external;  // positioner axes (URDF rad), zero without a positioner
-  // The positioner could turn the build direction vertical (true without one); its limits are
-  // checked with the rest (motion_checks.h).
+  // The positioner could turn the build direction vertical, within params.buildTiltToleranceDeg
+  // (true without one); its limits are checked with the rest (motion_checks.h).
   std::vector<bool> positionerReached;
   Vec3 referenceAxis = -Vec3::UnitZ();  // base frame: the chart's reference torch axis
 };
 
 // Places every point (JointPathSetup: fixed part, or positioner keeping the build direction
-// vertical; params.turntableFollowsPoint fills a free rotation) and builds the chart.
+// vertical, placeOnPositioner in positioner_path.h) and builds the chart.
 MotionFrames buildMotionFrames(const Trajectory& path, const JointPathSetup& setup,
                                const MotionParams& params, Progress& progress);
 

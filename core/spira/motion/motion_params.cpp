@@ -26,6 +26,9 @@ void MotionParams::validate() const
           "cable twist limit must be >= 0 deg", "use the cell's cable_twist_limit_deg, or 0 for no limit");
   require(std::isfinite(limitMarginDeg) && limitMarginDeg >= 0.0 && limitMarginDeg < 90.0,
           "joint limit margin must be in [0, 90) deg", "use a few degrees, e.g. 2");
+  require(
+      std::isfinite(buildTiltToleranceDeg) && buildTiltToleranceDeg >= 0.0 && buildTiltToleranceDeg < 45.0,
+      "build tilt tolerance must be in [0, 45) deg", "use about 2 deg");
   require(std::isfinite(centringWeight) && centringWeight >= 0.0, "centring weight must be >= 0",
           "use 0.01, or 0 for the pure joint motion objective");
   require(maxIterations >= 1 && maxIterations <= 10000, "max iterations must be in 1..10000", "use about 40");

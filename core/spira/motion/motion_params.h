@@ -57,8 +57,16 @@ struct MotionParams {
   // With a positioner, a build direction along the rotation axis leaves the rotation free
   // (vertical walls on a turntable). On: the rotation follows the point so that it stays where
   // the previous one was (the table turns the part under the torch). Off: the rotation is held,
-  // as solveJointTrajectory does, and the robot travels around the part.
+  // as solveJointTrajectory does, and the robot travels around the part. Either way this is the
+  // target the rotation keeps to wherever the tolerance below allows.
   bool turntableFollowsPoint = true;
+  // Angle (deg) from the vertical the positioner may leave a build direction at. Within it of the
+  // rotation axis the rotation is free; beyond, the rotation may stray from the exact solution as
+  // far as keeps the direction within it. A spiral's build direction leans by its climb per turn,
+  // atan(h / (2 pi r)) (0.9 deg for h = 2 mm at r = 20 mm), and by facet noise: with an exact
+  // solution that lean's azimuth drives the rotation, which then jumps by up to 90 deg between
+  // points. Welding's flat position (ISO 6947 PA) allows far more than 2 deg.
+  double buildTiltToleranceDeg = 2.0;
 
   // Throws InputError naming the bad field.
   void validate() const;

@@ -44,6 +44,16 @@ struct MotionReport {
   std::string maxSpeedRatioAxis;
   size_t maxSpeedRatioPoint = kNone;  // the segment's end point
   size_t segmentsWithoutSpeed = 0;
+  // Per point, the largest of those ratios over the axes on the segment into it (0 where there is
+  // none: the first point, a segment from or to an unreached point, no travel speed).
+  std::vector<double> speedRatio;
+  // Per axis (robot axes, then the positioner's), its largest ratio and where.
+  struct AxisSpeed {
+    std::string axis;
+    double maxRatio = 0.0;
+    size_t point = kNone;
+  };
+  std::vector<AxisSpeed> axisSpeeds;
   // Torch cable twist |q4 + q6| (controller degrees) over reached points, and its limit check
   // (always true when the limit is 0 = off).
   double maxCableTwistDeg = 0.0;

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
+#include <functional>
 #include <numeric>
 #include <sstream>
 
@@ -90,6 +91,18 @@ double CalibrationTable::travelSpeed(double height) const
       static_cast<size_t>(std::upper_bound(heights_.begin(), heights_.end(), height) - heights_.begin());
   const double t = (height - heights_[k - 1]) / (heights_[k] - heights_[k - 1]);
   return travelSpeeds_[k - 1] + t * (travelSpeeds_[k] - travelSpeeds_[k - 1]);
+}
+
+double CalibrationTable::height(double travelSpeed) const
+{
+  // Speeds decrease as heights grow: the segment whose speeds bracket travelSpeed.
+  if (travelSpeed >= travelSpeeds_.front()) return heights_.front();
+  if (travelSpeed <= travelSpeeds_.back()) return heights_.back();
+  const size_t k = static_cast<size_t>(
+      std::upper_bound(travelSpeeds_.begin(), travelSpeeds_.end(), travelSpeed, std::greater<double>()) -
+      travelSpeeds_.begin());
+  const double t = (travelSpeed - travelSpeeds_[k - 1]) / (travelSpeeds_[k] - travelSpeeds_[k - 1]);
+  return heights_[k - 1] + t * (heights_[k] - heights_[k - 1]);
 }
 
 CalibrationTable parseCalibrationCsv(std::istream& in, const std::string& source)

@@ -26,6 +26,8 @@ class CalibrationTable {
   bool covers(double height) const { return height >= heightMin() && height <= heightMax(); }
   // Piecewise-linear travel speed for `height`; heights beyond the table take the end value.
   double travelSpeed(double height) const;
+  // Its inverse: the height laid at `travelSpeed`; speeds beyond the table take the end value.
+  double height(double travelSpeed) const;
 
  private:
   std::vector<double> heights_;

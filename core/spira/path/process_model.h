@@ -45,6 +45,10 @@ struct ProcessSettings {
   // executable (the ramps' seam points near a closure point ask for a nearly zero deposit, i.e. an
   // unbounded travel speed). The report keeps the requested value.
   bool clampToLimits = true;
+  // The robot controller may slow the travel below the plan where an axis would pass its speed
+  // limit (the wire feed keeps its setpoint). Not used here: the motion check reports the thicker
+  // deposit that follows (slowdown_deposit.h); off, an axis over its limit makes the plan infeasible.
+  bool allowSlowdown = false;
 };
 
 enum class ProcessViolationKind {

@@ -45,7 +45,7 @@ struct ExportOutcome {
 // With job.prep.leadWireFeed the wire-feed setpoints are led by the feeder's lag (the
 // kWfsCommandChannel / kWfsLeadChannel channels of export_path.h). Throws InputError for unknown
 // exporters or bad parameters; an exporter refuses unreachable or colliding targets unless its
-// `force` parameter is set.
+// `force` parameter is set (InfeasibleError).
 ExportOutcome exportTrajectory(const PluginRegistry& registry, const Trajectory& planned,
                                const ExportJob& job, const std::filesystem::path& outDir, Progress& progress);
 

@@ -3,11 +3,13 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 
 #include "spira/base/units.h"
 #include "spira/collision/collision_resolver.h"
 #include "spira/motion/motion_solver.h"
 #include "spira/pipeline/sub_paths.h"
+#include "spira/planning/plan_schemas.h"
 #include "spira/robotcell/robot_collision_model.h"
 
 namespace spira {
@@ -72,6 +74,68 @@ nlohmann::json indexOrNull(size_t i)
   return i == MotionReport::kNone ? nlohmann::json(nullptr) : nlohmann::json(i);
 }
 
+// A number, or null where it is not finite (a turn on the spot needs an infinite speed).
+nlohmann::json finiteOrNull(double v)
+{
+  return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
+}
+
+nlohmann::json slowdownJson(const SlowdownReport& s, const DepositWindow& window)
+{
+  nlohmann::json points = nlohmann::json::array();
+  for (const SlowedPoint& p : s.points)
+    points.push_back(
+        {p.point, finiteOrNull(p.factor), p.plannedHeight, finiteOrNull(p.slowedHeight), p.fits});
+  return {{"height_model", s.model},
+          {"window_mm", {window.hMin - window.tolerance, window.hMax + window.tolerance}},
+          {"points_slowed", s.points.size()},
+          {"outside_window", s.outsideWindow},
+          {"max_factor", finiteOrNull(s.maxFactor)},
+          {"max_factor_point", s.points.empty() ? nlohmann::json(nullptr) : nlohmann::json(s.maxFactorPoint)},
+          {"max_height_mm", s.points.empty() ? nlohmann::json(nullptr) : finiteOrNull(s.maxSlowedHeight)},
+          {"max_height_point",
+           s.points.empty() ? nlohmann::json(nullptr) : nlohmann::json(s.maxSlowedHeightPoint)},
+          {"columns", {"index", "factor", "height_mm", "slowed_height_mm", "fits"}},
+          {"points", points}};
+}
+
+// Each positioner axis's [min, max] over the path: the rotary axis's winding (positioner_path.h).
+nlohmann::json positionerRangeJson(const JointTrajectory& joints)
+{
+  nlohmann::json out = nlohmann::json::object();
+  for (size_t k = 0; k < 2; ++k) {
+    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+    for (const JointPoint& p : joints.points) {
+      lo = std::min(lo, p.externalDeg[k]);
+      hi = std::max(hi, p.externalDeg[k]);
+    }
+    if (lo <= hi) out[joints.externalLimits[k].name] = {lo, hi};
+  }
+  return out;
+}
+
+// Which axes pass their speed limit, where and by how much, and what slowing down would do.
+nlohmann::json jointSpeedJson(const MotionReport& m, const PlanMotion& out, const MotionSettings& settings)
+{
+  std::vector<size_t> over;
+  for (size_t i = 0; i < m.speedRatio.size(); ++i)
+    if (m.speedRatio[i] > 1.0) over.push_back(i);
+  nlohmann::json axes = nlohmann::json::object();
+  for (const MotionReport::AxisSpeed& a : m.axisSpeeds)
+    axes[a.axis] = {{"max_percent", finiteOrNull(100.0 * a.maxRatio)}, {"point", indexOrNull(a.point)}};
+  nlohmann::json j = {{"within_limits", over.empty()},
+                      {"allow_slowdown", settings.process.allowSlowdown},
+                      {"ok", out.withinJointSpeeds},
+                      {"max_percent", finiteOrNull(100.0 * m.maxSpeedRatio)},
+                      {"axis", m.maxSpeedRatioAxis},
+                      {"point", indexOrNull(m.maxSpeedRatioPoint)},
+                      {"points_over_limit", over.size()},
+                      {"over_limit_indices", firstIndices(over)},
+                      {"per_axis", axes}};
+  if (settings.process.allowSlowdown) j["slowdown"] = slowdownJson(out.slowdown, settings.window);
+  return j;
+}
+
 }  // namespace
 
 MotionParams motionParamsFor(const RobotCell& cell, const MotionSettings& settings)
@@ -80,6 +144,16 @@ MotionParams motionParamsFor(const RobotCell& cell, const MotionSettings& settin
   p.optimiseSpin = settings.optimiseSpin;
   p.cableTwistLimitDeg = cell.record().cableTwistLimitDeg;
   return p;
+}
+
+MotionSettings motionSettingsFrom(const ParamSet& process, const ParamSet& spiral)
+{
+  MotionSettings m;
+  m.process = processSettingsFrom(process);
+  m.beadWidth = m.process.beadWidth;
+  const SpiralSettings s = spiralSettingsFrom(spiral);
+  m.window = DepositWindow{s.hMin, s.hMax, s.heightTolerance * s.h};
+  return m;
 }
 
 PlanMotion solvePlanMotion(const RobotCell& cell, const Trajectory& plan, const MotionSettings& settings,
@@ -133,6 +207,11 @@ PlanMotion solvePlanMotion(const RobotCell& cell, const Trajectory& plan, const 
   unreachable.insert(unreachable.end(), m.outsideLimits.begin(), m.outsideLimits.end());
   std::sort(unreachable.begin(), unreachable.end());
   out.reachable = m.reachable && unreachable.empty() && m.withinCableTwistLimit;
+  // The controller cannot run an axis past its speed limit: it stops with an error, or, when
+  // allowed, slows the move down, which thickens the deposit.
+  if (settings.process.allowSlowdown)
+    out.slowdown = slowdownDeposit(out.trajectory, m.speedRatio, settings.process, settings.window);
+  out.withinJointSpeeds = m.maxSpeedRatio <= 1.0 || (settings.process.allowSlowdown && out.slowdown.fits());
 
   nlohmann::json& r = out.report;
   r["cell"] = cell.record().name;
@@ -154,6 +233,8 @@ PlanMotion solvePlanMotion(const RobotCell& cell, const Trajectory& plan, const 
   r["max_joint_speed_ratio"] = m.maxSpeedRatio;
   r["max_joint_speed_axis"] = m.maxSpeedRatioAxis;
   r["max_joint_speed_point"] = indexOrNull(m.maxSpeedRatioPoint);
+  r["joint_speed"] = jointSpeedJson(m, out, settings);
+  if (out.joints.hasPositioner) r["positioner_range_deg"] = positionerRangeJson(out.joints);
   r["max_cable_twist_deg"] = m.maxCableTwistDeg;
   r["cable_twist_limit_deg"] = cell.record().cableTwistLimitDeg;
   r["within_cable_twist_limit"] = m.withinCableTwistLimit;

@@ -5,8 +5,11 @@
 #include "spira/base/progress.h"
 #include "spira/mesh/triangle_mesh.h"
 #include "spira/motion/motion_params.h"
+#include "spira/motion/slowdown_deposit.h"
 #include "spira/path/joint_trajectory.h"
+#include "spira/path/process_model.h"
 #include "spira/path/trajectory.h"
+#include "spira/plugin/parameter.h"
 #include "spira/robotcell/robot_cell.h"
 
 namespace spira {
@@ -24,10 +27,20 @@ struct MotionSettings {
   // Layer-wise optimisation of the torch spin (Chalvin ch. 4); off: the spin is held constant in
   // the robot's base frame. The cable-twist limit is the cell's.
   bool optimiseSpin = true;
+  // The process the plan was made with: process.allowSlowdown lets the controller slow down where
+  // an axis would pass its speed limit at the planned travel speed, and its height model says how
+  // much the deposit thickens there (slowdown_deposit.h), which must stay inside `window`.
+  ProcessSettings process;
+  DepositWindow window;
 };
 
 // The motion parameters of a cell and these settings.
 MotionParams motionParamsFor(const RobotCell& cell, const MotionSettings& settings);
+
+// Settings from the plan's "process" and "spiral" sections (plan_schemas.h): bead width, process
+// (allow_slowdown and the height model) and the deposit window; the rest at their defaults.
+// Throws InputError as processSettingsFrom and spiralSettingsFrom do.
+MotionSettings motionSettingsFrom(const ParamSet& process, const ParamSet& spiral);
 
 // The robot side of a plan: the torch checked (and, when allowed, tilted) against the deposit so
 // far and the substrate, then every point solved on the cell.
@@ -37,8 +50,15 @@ struct PlanMotion {
   bool reachable = false;           // every point reached within the controller limits
   size_t unresolvedCollisions = 0;  // torch against deposit and substrate
   size_t robotCollisions = 0;       // checked points where a robot link hits something
-  nlohmann::json report;            // the report.json keys of the cell (see plan_motion.cpp)
-  bool ok() const { return reachable && unresolvedCollisions == 0 && robotCollisions == 0; }
+  // Every axis keeps within its speed limit at the planned travel speed, or the controller may
+  // slow down (settings.process.allowSlowdown) and the thicker deposit still fits the window.
+  bool withinJointSpeeds = true;
+  SlowdownReport slowdown;  // the points slowed down (filled when slowing down is allowed)
+  nlohmann::json report;    // the report.json keys of the cell (see plan_motion.cpp)
+  bool ok() const
+  {
+    return reachable && unresolvedCollisions == 0 && robotCollisions == 0 && withinJointSpeeds;
+  }
 };
 
 PlanMotion solvePlanMotion(const RobotCell& cell, const Trajectory& plan, const MotionSettings& settings,

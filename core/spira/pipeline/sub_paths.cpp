@@ -26,6 +26,17 @@ void mergeReport(MotionReport& total, const MotionReport& part, size_t offset, b
     total.maxSpeedRatioPoint = shift(part.maxSpeedRatioPoint);
   }
   total.segmentsWithoutSpeed += part.segmentsWithoutSpeed;
+  total.speedRatio.insert(total.speedRatio.end(), part.speedRatio.begin(), part.speedRatio.end());
+  for (const MotionReport::AxisSpeed& axis : part.axisSpeeds) {
+    auto it = std::find_if(total.axisSpeeds.begin(), total.axisSpeeds.end(),
+                           [&axis](const MotionReport::AxisSpeed& a) { return a.axis == axis.axis; });
+    if (it == total.axisSpeeds.end())
+      it = total.axisSpeeds.insert(total.axisSpeeds.end(), {axis.axis, 0.0, MotionReport::kNone});
+    if (axis.maxRatio > it->maxRatio) {
+      it->maxRatio = axis.maxRatio;
+      it->point = shift(axis.point);
+    }
+  }
   if (first || part.maxCableTwistDeg > total.maxCableTwistDeg) {
     total.maxCableTwistDeg = part.maxCableTwistDeg;
     total.maxCableTwistPoint = shift(part.maxCableTwistPoint);

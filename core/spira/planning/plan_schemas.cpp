@@ -113,6 +113,19 @@ const ParamSchema& processSchema()
           "Slowest wire feed the power source allows.", "Limits"),
       num("wfs_max", 20.0, 0.0, 60.0, "m/min", "Maximum wire-feed speed",
           "Fastest wire feed the power source allows.", "Limits"),
+      ParamDef{"allow_slowdown",
+               ParamType::Bool,
+               false,
+               {},
+               {},
+               "",
+               "Let the controller slow down",
+               "Where a robot or positioner axis would pass its speed limit at the planned travel speed, let "
+               "the controller slow the move down. The wire feed keeps its setpoint, so the deposit thickens "
+               "there: the plan reports by how much, point by point, and is infeasible only if the thicker "
+               "deposit leaves the window. Off: any axis over its speed limit makes the plan infeasible.",
+               "Limits",
+               {}},
   });
   return schema;
 }
@@ -163,6 +176,7 @@ ProcessSettings processSettingsFrom(const ParamSet& given)
   if (s.limits.wireFeedMin >= s.limits.wireFeedMax)
     throw InputError("the wire-feed limits are crossed (wfs_min >= wfs_max)",
                      "set --wfs-min below --wfs-max");
+  s.allowSlowdown = v.getBool("allow_slowdown");
   const std::string& table = v.getString("calibration");
   if (!table.empty()) {
     s.model = HeightModel::Calibration;

@@ -27,9 +27,8 @@ KinematicsJobResult runKinematics(const DocumentState& snapshot, const Trajector
                              ". Choose a cell with a 6-axis arm.");
       return out;
     }
-    MotionSettings settings;
-    settings.beadWidth =
-        processSettingsFrom(snapshot.settings->section(PlanSettings::kProcessSection)).beadWidth;
+    MotionSettings settings = motionSettingsFrom(snapshot.settings->section(PlanSettings::kProcessSection),
+                                                 snapshot.settings->section(PlanSettings::kSpiralSection));
     settings.substrateZ = substrateZ;
     settings.part = snapshot.part ? snapshot.part->mesh.get() : nullptr;
     // A tilted part was planned with the world's up: the cell holds it the same way, so the
@@ -60,6 +59,18 @@ KinematicsJobResult runKinematics(const DocumentState& snapshot, const Trajector
       out.warnings.push_back(
           "The torch cable twists beyond the cell's limit; enable the spin optimisation or "
           "change the part's placement.");
+    if (!motion.withinJointSpeeds) {
+      const nlohmann::json& speed = report["joint_speed"];
+      if (speed.value("allow_slowdown", false))
+        out.warnings.push_back(
+            "Where the axes cannot keep up with the travel speed the controller slows down, "
+            "and the deposit thickens beyond the window at " +
+            std::to_string(motion.slowdown.outsideWindow) + " point(s).");
+      else
+        out.warnings.push_back("Axis " + speed.value("axis", std::string()) +
+                               " would pass its speed limit at the planned travel speed. Let the controller "
+                               "slow down (Process, Limits) or plan a slower process.");
+    }
     if (motion.unresolvedCollisions > 0)
       out.warnings.push_back("The torch collides at " + std::to_string(motion.unresolvedCollisions) +
                              " point(s) that tilting could not clear (marked in red).");
