@@ -106,6 +106,11 @@ std::string knownFailure(const std::string& file, const std::string& strategy)
       {"vase_honeycomb_solid.stl", "*", kSolidAsHoles},
       {"pot_twisted_wall.stl", "isovalue", kNoAdvice},
       {"pot_twisted_wall.stl", "geodesic", kNoAdvice},
+      {"tube_straight_wall.stl", "envelope_projection",
+       "not repeatable: the same command ends in exit 3 ('the part's skeleton does not rise steadily in z') "
+       "in most runs and in exit 4 with no hint (a plan the check finds thin and thick) in others; a "
+       "straight "
+       "tube should plan, the same way every time"},
       {"tube_straight_wall.stl", "*", kNoAdvice},
       {"tube_straight_solid.stl", "*", kSolidAsHoles},
       {"elbow_tube_wall.stl", "isovalue", kNoAdvice},

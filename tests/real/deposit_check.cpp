@@ -78,6 +78,12 @@ Heights measureHeights(const std::vector<PathPoint>& pts, const std::vector<int>
     if (sameRun(run, i, i - 1)) arcLen[i] = arcLen[i - 1] + (pts[i].p - pts[i - 1].p).norm();
 
   const double reach = std::sqrt(half * half + lowest * lowest) + 1e-9;
+  V3 lo = n ? pts[0].p : V3{}, hi = lo;
+  for (const auto& q : pts) {
+    lo = V3(std::min(lo.x, q.p.x), std::min(lo.y, q.p.y), std::min(lo.z, q.p.z));
+    hi = V3(std::max(hi.x, q.p.x), std::max(hi.y, q.p.y), std::max(hi.z, q.p.z));
+  }
+  const double extent = (hi - lo).norm();
   SegmentGrid grid(std::max(reach, 1.0));
   std::vector<size_t> material;  // segment j = (p_j, p_j+1)
   size_t next = 0;               // the first segment start not yet laid down as material
@@ -110,16 +116,23 @@ Heights measureHeights(const std::vector<PathPoint>& pts, const std::vector<int>
       const double t = (p.z - s.substrateZ) / b.z;
       if (t >= lowest) best = t;
     }
-    grid.query(p, reach, [&](size_t j) {
-      const V3& a = pts[j].p;
-      const V3& c = pts[j + 1].p;
-      const double sa = tau.dot(a - p), sc = tau.dot(c - p);
-      if (sa * sc > 0 || sa == sc) return;
-      const V3 x = a + (c - a) * (sa / (sa - sc));
-      if (std::abs(nu.dot(x - p)) > half) return;
-      const double t = b.dot(p - x);
-      if (t >= lowest) best = std::min(best, t);
-    });
+    auto crossings = [&](const V3& centre, double radius) {
+      grid.query(centre, radius, [&](size_t j) {
+        const V3& a = pts[j].p;
+        const V3& c = pts[j + 1].p;
+        const double sa = tau.dot(a - p), sc = tau.dot(c - p);
+        if (sa * sc > 0 || sa == sc) return;
+        const V3 x = a + (c - a) * (sa / (sa - sc));
+        if (std::abs(nu.dot(x - p)) > half) return;
+        const double t = b.dot(p - x);
+        if (t >= lowest) best = std::min(best, t);
+      });
+    };
+    crossings(p, reach);
+    // A crossing deeper than the reach still counts (the point is then unsupported, not judged
+    // by the fallback): walk down the torch axis one stretch at a time before falling back.
+    for (double t0 = reach; !std::isfinite(best) && t0 < extent; t0 += reach)
+      crossings(p - b * (t0 + 0.5 * reach), 0.5 * reach + half);
     if (!std::isfinite(best)) {
       // Nothing crosses (a sharp turn, a closure point): what passes near the torch axis counts.
       grid.query(p, reach, [&](size_t j) {
