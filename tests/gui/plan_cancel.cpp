@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <chrono>
 #include <iostream>
+#include <set>
 #include <vector>
 
 #include <QAction>
@@ -225,22 +226,34 @@ TEST(PlanCancel, ContradictorySettingsFailWithTheHintAndInfeasiblePlansAreFlagge
   ASSERT_NE(list, nullptr);
   const double hMin = report.value("h_min", 0.0), hMax = report.value("h_max", 0.0);
   const double tol = report.value("height_tolerance_mm", 0.0);
-  int listed = 0;
+  // Two lists: the planned heights outside the window, then the points the deposit check rejects.
+  std::set<long long> rejected;
+  for (const auto& f : report["deposit_check"]["flagged_points"])
+    rejected.insert(f["point"].get<long long>());
+  int listed = 0, listedRejected = 0;
   for (int row = 0; row < list->count(); ++row) {
     const QVariant v = list->item(row)->data(ui::PathInspector::kPointRole);
     if (!v.isValid()) continue;
-    ++listed;
     const long long i = v.toLongLong();
     ASSERT_GE(i, 0);
     ASSERT_LT(static_cast<size_t>(i), doc.results().process->size());
     const double h = doc.results().process->points[static_cast<size_t>(i)].height;
-    EXPECT_TRUE(h < hMin - tol || h > hMax + tol) << "point " << i << " at " << h << " mm";
+    if (list->item(row)->text().contains("outside the window")) {
+      ++listed;
+      EXPECT_TRUE(h < hMin - tol || h > hMax + tol) << "point " << i << " at " << h << " mm";
+    } else {
+      ++listedRejected;
+      EXPECT_EQ(rejected.count(i), 1u) << list->item(row)->text().toStdString();
+    }
     EXPECT_TRUE(list->item(row)->text().contains("Point " + QLocale().toString(i) + " ("))
         << list->item(row)->text().toStdString();
     emit list->itemClicked(list->item(row));
     EXPECT_EQ(w.pointSelection()->index(), i);
   }
   EXPECT_EQ(listed, std::min(ui::PathInspector::kMaxListedPoints, report.value("violations", 0)));
+  EXPECT_EQ(listedRejected,
+            std::min<int>(ui::PathInspector::kMaxListedPoints, static_cast<int>(rejected.size())));
+  EXPECT_GT(listedRejected, 0);
   const QImage image = w.captureImage();
   EXPECT_GT(distinctColours(image, sceneRect(w)), 400);
   saveDocScreenshot(image, "plan-infeasible.png");

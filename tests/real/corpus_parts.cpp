@@ -95,16 +95,11 @@ const KnownFailure* knownFailure(const std::string& file, const std::string& str
   static const std::string kNoAdvice =
       "exit 4 prints only the count of deposits outside the window ('INFEASIBLE: n deposit(s) ...'), no "
       "hint what to change (window, h, strategy)";
-  static const std::string kSolidAsHoles =
-      "a watertight thin-walled solid is refused with 'fill holes in the mesh tool'; it has no hole: the "
-      "message should say it is a solid and to export the wall's surface (mid-surface or one skin)";
   static const std::string kBranchesAsHoles =
       "a real branching wall (three open ends) is refused as 'a hole or several branches ... its contours "
       "do not part into branches ... fill holes': the branches are not holes, the message misleads";
   static const std::vector<KnownFailure> known = {
       {"vase_honeycomb_wall.stl", "*", kNoAdvice},
-      {"vase_honeycomb_solid.stl", "*", kSolidAsHoles},
-      {"pot_twisted_wall.stl", "isovalue", kNoAdvice},
       {"pot_twisted_wall.stl", "geodesic", kNoAdvice},
       {"tube_straight_wall.stl", "envelope_projection",
        "the same command ends in exit 3 ('the part's skeleton does not rise steadily in z') in some runs and "
@@ -116,11 +111,7 @@ const KnownFailure* knownFailure(const std::string& file, const std::string& str
        "with no hint in others",
        false},
       {"tube_straight_wall.stl", "*", kNoAdvice},
-      {"tube_straight_solid.stl", "*", kSolidAsHoles},
-      {"elbow_tube_wall.stl", "isovalue", kNoAdvice},
       {"elbow_tube_wall.stl", "geodesic", kNoAdvice},
-      {"elbow_tube_solid.stl", "*", kSolidAsHoles},
-      {"tube_on_base_solid.stl", "*", kSolidAsHoles},
       {"hepa_filter_assembly.step", "*",
        "a STEP assembly of 8 parts is refused with 'repair the mesh ... make it manifold'; it should say the "
        "file holds several pieces and to import one part at a time"},

@@ -29,9 +29,13 @@ std::string shortId(const std::string& id)
   return dot == std::string::npos ? id : id.substr(dot + 1);
 }
 
+// Wider than h +/- 50 % no WAAM process lays a steady bead: such a window is not advice.
+constexpr double kWidestWindow = 0.5;
+
 // The window that holds every measured height, on a 0.05 mm grid; nothing when a point failed for
-// another reason than its thickness (a wider window cannot support a bead in mid-air).
-std::optional<Window> measuredWindow(const PlanOutput& plan, const SpiralSettings& s)
+// another reason than its thickness (a wider window cannot support a bead in mid-air), or when it
+// would be wider than a process lays (then `tooWide` says which window it would take).
+std::optional<Window> measuredWindow(const PlanOutput& plan, const SpiralSettings& s, std::string& tooWide)
 {
   const DepositCheckReport& d = plan.deposits;
   if (d.flags.empty() || d.uncoveredFraction() > 0.005) return std::nullopt;
@@ -44,6 +48,11 @@ std::optional<Window> measuredWindow(const PlanOutput& plan, const SpiralSetting
   w.hMin = std::floor(w.hMin / 0.05) * 0.05;
   w.hMax = std::ceil(w.hMax / 0.05) * 0.05;
   if (w.hMin <= 0.0 || w.hMin >= s.h || w.hMax <= s.h) return std::nullopt;
+  if (w.hMin < (1.0 - kWidestWindow) * s.h || w.hMax > (1.0 + kWidestWindow) * s.h) {
+    tooWide = "the beads as planned would need a window of " + text(w.hMin) + " .. " + text(w.hMax) +
+              " mm, wider than h +/- 50 %, which no process lays steadily";
+    return std::nullopt;
+  }
   return w;
 }
 
@@ -93,10 +102,11 @@ class Trial {
 std::string PlanAdvice::text() const
 {
   if (found) return change + " (" + flags + "): planned and checked feasible";
-  if (tried.empty()) return "no change of window or strategy was found that plans the part";
-  std::string t = "no change Spira tried plans the part: ";
-  for (size_t i = 0; i < tried.size(); ++i) t += (i ? "; " : "") + tried[i];
-  return t;
+  std::string t =
+      "cut the part into pieces whose walls rise more evenly, or widen the process window if your process "
+      "lays a wider range of beads: no change of window or strategy Spira tried plans it";
+  for (size_t i = 0; i < tried.size(); ++i) t += (i ? "; " : " (") + tried[i];
+  return tried.empty() ? t : t + ")";
 }
 
 PlanAdvice adviseChange(const PluginRegistry& registry, const PlanRequest& request, const PlanOutput* failed,
@@ -105,8 +115,10 @@ PlanAdvice adviseChange(const PluginRegistry& registry, const PlanRequest& reque
   PlanAdvice advice;
   auto it = request.params.find("spiral");
   const SpiralSettings settings = spiralSettingsFrom(it == request.params.end() ? ParamSet() : it->second);
-  const std::optional<Window> window = failed ? measuredWindow(*failed, settings) : std::nullopt;
+  std::string tooWide;
+  const std::optional<Window> window = failed ? measuredWindow(*failed, settings, tooWide) : std::nullopt;
   Trial trial(registry, request, progress, maxPlans);
+  if (!tooWide.empty()) trial.tried.push_back(tooWide);
   auto windowText = [](const Window& w) {
     return std::make_pair("widen the process window to " + text(w.hMin) + " .. " + text(w.hMax) + " mm",
                           "--h-min " + text(w.hMin) + " --h-max " + text(w.hMax));

@@ -267,6 +267,15 @@ void PlanPanel::refreshVerdict()
     if (const double rampMax = j.value("ramp_height_max", 0.0); rampMax > 0.0)
       lines << tr("Start-up and closing ramps %1 to %2")
                    .arg(mmText(j.value("ramp_height_min", 0.0)), mmText(rampMax));
+    const nlohmann::json check = j.contains("deposit_check") && j["deposit_check"].is_object()
+                                     ? j["deposit_check"]
+                                     : nlohmann::json::object();
+    if (!check.empty()) {
+      const nlohmann::json coverage = check.value("coverage", nlohmann::json::object());
+      lines << tr("Deposit check: laid %1 to %2 on what is below, %3 % of the surface covered")
+                   .arg(mmText(check.value("height_min", 0.0)), mmText(check.value("height_max", 0.0)),
+                        loc.toString(100.0 * (1.0 - coverage.value("uncovered_fraction", 0.0)), 'f', 1));
+    }
     if (const auto& process = r.report(Stage::Process); r.process && process) {
       lines << tr("Build time %1 min").arg(loc.toString(process->value("build_time_s", 0.0) / 60.0, 'f', 1));
     } else {
@@ -277,9 +286,13 @@ void PlanPanel::refreshVerdict()
       style = QStringLiteral(
           "background: #e3f4e1; color: #1d5a1a; border: 1px solid #9fcf99; border-radius: 3px;");
     } else {
-      const int outside = j.value("violations", 0);
-      QString why = outside > 0 ? tr("%n point(s) outside the process window", nullptr, outside)
-                                : tr("the generatrices' lengths differ more than the window allows");
+      const int flagged = check.value("flagged", 0);
+      const QString why =
+          flagged > 0 ? tr("the deposit check rejects %n point(s) (listed in Messages)", nullptr, flagged)
+                      : tr("%1 % of the surface is left uncovered")
+                            .arg(loc.toString(100.0 * check.value("coverage", nlohmann::json::object())
+                                                          .value("uncovered_fraction", 0.0),
+                                              'f', 1));
       text = tr("<b>Infeasible plan:</b> %1<br>%2").arg(why, lines.join(QStringLiteral("<br>")));
       style = QStringLiteral(
           "background: #fbe3e1; color: #8a1c14; border: 1px solid #e3a29b; border-radius: 3px;");
