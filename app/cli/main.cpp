@@ -8,6 +8,7 @@
 #include "spira/base/error.h"
 #include "spira/base/progress.h"
 #include "spira/base/version.h"
+#include "thread_limit.h"
 
 namespace {
 
@@ -24,7 +25,8 @@ constexpr const char* kUsageText =
     "  export PLAN_DIR --format krl|fanuc_tp -o DIR   robot program of a plan\n"
     "  sample NAME -o FILE   write a bundled sample part (open-cylinder, dome, cone) made in code\n"
     "\n"
-    "options: --help (also after a command), --version\n"
+    "options: --help (also after a command), --version, --threads N (at most N threads; also the\n"
+    "         SPIRA_THREADS environment variable; the results are the same with any count)\n"
     "exit codes: 0 success, 2 usage error, 3 bad input, 4 infeasible plan, 1 internal error\n";
 
 int dispatch(const std::string& command, const std::vector<std::string>& rest)
@@ -47,6 +49,13 @@ int main(int argc, char** argv)
 {
   using namespace spira::cli;
   std::vector<std::string> args(argv + 1, argv + argc);
+  int threads = 0;
+  try {
+    threads = takeThreadCount(args);
+  } catch (const UsageError& e) {
+    std::cerr << "spira-cli: " << e.what() << " (" << e.hint() << ")\n";
+    return kUsage;
+  }
   if (args.empty() || args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
     std::cout << kUsageText;
     return args.empty() ? kUsage : kOk;
@@ -55,10 +64,10 @@ int main(int argc, char** argv)
     std::cout << "spira-cli " << spira::kVersion << "\n";
     return kOk;
   }
-  const std::string command = args[0];
-  args.erase(args.begin());
   try {
-    return dispatch(command, args);
+    const std::string command = args[0];
+    args.erase(args.begin());
+    return runWithThreads(threads, [&] { return dispatch(command, args); });
   } catch (const UsageError& e) {
     std::cerr << "spira-cli: " << e.what() << " (" << e.hint() << ")\n";
     return kUsage;

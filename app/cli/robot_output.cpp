@@ -1,5 +1,6 @@
 #include "robot_output.h"
 
+#include <cstdlib>
 #include <ctime>
 #include <filesystem>
 #include <iomanip>
@@ -9,6 +10,25 @@
 #include "cli_common.h"
 
 namespace spira::cli {
+
+namespace {
+
+// When the program is written: now, or SOURCE_DATE_EPOCH (seconds since 1970-01-01 UTC, the
+// reproducible-builds convention) when set, so that the same plan gives byte-identical programs.
+std::time_t programTime()
+{
+  const char* epoch = std::getenv("SOURCE_DATE_EPOCH");
+  if (!epoch || !*epoch) return std::time(nullptr);
+  char* end = nullptr;
+  const long long seconds = std::strtoll(epoch, &end, 10);
+  if (*end != '\0' || seconds < 0)
+    throw UsageError(
+        "SOURCE_DATE_EPOCH must be a whole number of seconds since 1970, not '" + std::string(epoch) + "'",
+        "unset it to date programs now, or give e.g. SOURCE_DATE_EPOCH=0");
+  return static_cast<std::time_t>(seconds);
+}
+
+}  // namespace
 
 const ExporterPlugin& exporterFor(const PluginRegistry& registry, const std::string& format)
 {
@@ -29,7 +49,7 @@ std::map<std::string, std::string> programHeader(const std::string& partFile, co
   std::map<std::string, std::string> h;
   h["part"] = std::filesystem::path(partFile).filename().string();
   h["cell"] = cellFile.empty() ? "none (targets in the part frame)" : r.value("cell", cellFile);
-  const std::time_t now = std::time(nullptr);
+  const std::time_t now = programTime();
   std::ostringstream date;
   date << std::put_time(std::gmtime(&now), "%Y-%m-%d %H:%M UTC");
   h["date"] = date.str();

@@ -5,8 +5,8 @@
 namespace spira {
 
 // A skeleton chain as a smooth function of height. The mean curvature flow leaves its nodes
-// jittering sideways by a few tenths of a millimetre, and by a different amount each run (CGAL
-// orders its edge collapses by address); projected towards such a chain, the generatrices wobble.
+// jittering sideways by a few tenths of a millimetre (by an amount that depends on the order of
+// its edge collapses); projected towards such a chain, the generatrices wobble.
 // A local linear fit in z keeps the chain's course and drops the jitter: it is exact on a straight
 // chain and does not pull the ends in as an average would.
 struct HeightFit {

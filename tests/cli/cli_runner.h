@@ -11,7 +11,8 @@ struct CliRun {
   std::string err;
 };
 
-// Runs the built spira-cli with `args` (no shell: arguments are passed as they are).
-CliRun runCli(const std::vector<std::string>& args);
+// Runs the built spira-cli with `args` (no shell: arguments are passed as they are), in this
+// process's environment with the "NAME=VALUE" entries of `env` set on top.
+CliRun runCli(const std::vector<std::string>& args, const std::vector<std::string>& env = {});
 
 }  // namespace spira::test

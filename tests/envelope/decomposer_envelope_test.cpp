@@ -84,17 +84,17 @@ TEST(DecomposerEnvelope, AutoAxisDecomposesACylinderThroughItsSkeleton)
   }
 }
 
-// The skeleton's nodes differ from run to run (CGAL orders the flow's collapses by address), but
-// the axis fitted through them does not move the generatrices: every run, in either axis mode,
-// gives the cone's slant length.
+// Every run, in either axis mode, gives the cone's slant length, and the same generatrices to the
+// bit: the skeleton the axis is fitted through is the same on every run.
 TEST(DecomposerEnvelope, RepeatedRunsOnAConeGiveTheSlantLengthEveryTime)
 {
   const double r0 = 35, r1 = 25, H = 60;
   const TriangleMesh cone = makeOpenCone(r0, r1, H, 96, 40);
   const MeshReport r = validateMesh(cone);
   const double slant = std::hypot(H, r0 - r1);
-  for (const char* axis : {"auto", "skeleton"})
-    for (int run = 0; run < 6; ++run) {
+  for (const char* axis : {"auto", "skeleton"}) {
+    Generatrices first;
+    for (int run = 0; run < 3; ++run) {
       SCOPED_TRACE(std::string(axis) + " run " + std::to_string(run));
       ParamSet params;
       params.set("points_per_rev", std::int64_t{48});
@@ -104,7 +104,12 @@ TEST(DecomposerEnvelope, RepeatedRunsOnAConeGiveTheSlantLengthEveryTime)
       ASSERT_EQ(res.generatrices.lines.size(), 48u);
       for (const Polyline& l : res.generatrices.lines)
         EXPECT_NEAR(lineLength(l), slant, (axis[0] == 'a' ? 1e-9 : 5e-4) * slant);
+      if (run == 0)
+        first = res.generatrices;
+      else
+        EXPECT_TRUE(res.generatrices == first);
     }
+  }
 }
 
 TEST(DecomposerEnvelope, SkeletonAxisFollowsAnInclinedPart)

@@ -1,4 +1,5 @@
 #include <cmath>
+#include <thread>
 
 #include <gtest/gtest.h>
 
@@ -70,6 +71,32 @@ TEST(McfSkeleton, AnInclinedTubeGivesAStraightInclinedChain)
   ASSERT_EQ(r.skeleton.branchCount(), 1u);
   EXPECT_TRUE(r.skeleton.monotoneInZ);
   for (const Vec3& p : r.skeleton.branches[0]) EXPECT_LT(std::hypot(p.x() - slope * p.z(), p.y()), 0.03 * R);
+}
+
+// The flow collapses its short edges in a fixed order, so the skeleton is the same to the bit on
+// every run: computed again after the heap has changed, and on another thread (which allocates
+// from another malloc arena), it has the same nodes and edges.
+TEST(McfSkeleton, IsTheSameOnEveryRun)
+{
+  const TriangleMesh cone = makeOpenCone(35, 25, 60, 96, 40);
+  const auto skeleton = [&] {
+    NullProgress progress;
+    return computeCurveSkeleton(cone, SkeletonOptions{}, progress).skeleton.graph;
+  };
+  const SkeletonGraph first = skeleton();
+  std::vector<std::vector<double>> clutter;
+  for (size_t k = 1; k < 3000; k += 7) clutter.emplace_back(k % 97 + 1, 1.0);
+  const SkeletonGraph second = skeleton();
+  SkeletonGraph third;
+  std::thread([&] { third = skeleton(); }).join();
+  const SkeletonGraph* const again[] = {&second, &third};
+  for (const SkeletonGraph* run : again) {
+    EXPECT_EQ(run->edges, first.edges);
+    ASSERT_EQ(run->nodes.size(), first.nodes.size());
+    for (size_t n = 0; n < first.nodes.size(); ++n)
+      EXPECT_TRUE(run->nodes[n] == first.nodes[n])
+          << "node " << n << ": " << run->nodes[n].transpose() << " vs " << first.nodes[n].transpose();
+  }
 }
 
 TEST(McfSkeleton, AClosedYTubeHasThreeBranchesMeetingAtOnePoint)

@@ -63,7 +63,9 @@ CotanLaplacian buildCotanLaplacian(const TriangleMesh& mesh, const MeshAdjacency
 
   const auto& nb = adjacency.neighbors;
   const auto& ns = adjacency.neighborStart;
-  const std::pair<double, long> sum = tbb::parallel_reduce(
+  // Deterministic reduce: the same chunks summed in the same order whatever the thread count (a
+  // floating-point sum depends on its order, and the mean edge length sets the heat time step).
+  const std::pair<double, long> sum = tbb::parallel_deterministic_reduce(
       tbb::blocked_range<int>(0, n, 8192), std::pair<double, long>(0.0, 0),
       [&](const tbb::blocked_range<int>& r, std::pair<double, long> acc) {
         for (int v = r.begin(); v < r.end(); ++v)

@@ -215,7 +215,9 @@ MeshReport validateMesh(const TriangleMesh& mesh)
     if (!mesh.vertices[v].allFinite()) nonFinite.add(static_cast<int>(v), mesh.vertices[v]);
 
   std::vector<std::uint8_t> flags(nf, 0);
-  r.area = tbb::parallel_reduce(
+  // Sums use parallel_deterministic_reduce: the same chunks added in the same order whatever the
+  // thread count, so the report's figures come out the same to the last bit on every run.
+  r.area = tbb::parallel_deterministic_reduce(
       tbb::blocked_range<size_t>(0, nf, kGrain), 0.0,
       [&](const tbb::blocked_range<size_t>& range, double sum) {
         for (size_t f = range.begin(); f != range.end(); ++f) {
@@ -249,7 +251,7 @@ MeshReport validateMesh(const TriangleMesh& mesh)
     size_t count = 0;
     bool nonManifold = false;
   };
-  const LengthSum lengths = tbb::parallel_reduce(
+  const LengthSum lengths = tbb::parallel_deterministic_reduce(
       tbb::blocked_range<size_t>(0, table.edgeCount(), kGrain), LengthSum(),
       [&](const tbb::blocked_range<size_t>& range, LengthSum acc) {
         for (size_t e = range.begin(); e != range.end(); ++e) {

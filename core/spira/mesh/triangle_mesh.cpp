@@ -60,9 +60,11 @@ double TriangleMesh::faceArea(size_t f) const
   return 0.5 * faceNormalScaled(f).norm();
 }
 
+// Sums use parallel_deterministic_reduce: the same chunks added in the same order whatever the
+// thread count, so a floating-point sum comes out the same to the last bit on every run.
 double TriangleMesh::area() const
 {
-  return tbb::parallel_reduce(
+  return tbb::parallel_deterministic_reduce(
       tbb::blocked_range<size_t>(0, faces.size(), kParallelGrain), 0.0,
       [&](const tbb::blocked_range<size_t>& r, double sum) {
         for (size_t f = r.begin(); f != r.end(); ++f) sum += faceArea(f);
@@ -76,7 +78,7 @@ double TriangleMesh::meanEdgeLength() const
   const EdgeTable table = buildEdgeTable(*this);
   const size_t ne = table.edgeCount();
   if (ne == 0) return 0.0;
-  const double sum = tbb::parallel_reduce(
+  const double sum = tbb::parallel_deterministic_reduce(
       tbb::blocked_range<size_t>(0, ne, kParallelGrain), 0.0,
       [&](const tbb::blocked_range<size_t>& r, double s) {
         for (size_t e = r.begin(); e != r.end(); ++e) {

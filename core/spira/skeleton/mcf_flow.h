@@ -32,7 +32,9 @@ struct FlowSkeleton {
 // Contracts `surface` by CGAL's mean curvature flow, one step at a time, until one step changes the
 // meso-skeleton's area by less than areaVariation times the original area or maxIterations steps
 // ran, and returns the curve skeleton it collapses to. `beforeStep` runs before every step (it may
-// throw to cancel); `afterStep` gets the meso-skeleton's area over the original area.
+// throw to cancel); `afterStep` gets the meso-skeleton's area over the original area. The result
+// depends on `surface` and `settings` alone: the flow's edge collapses run in the mesh's own
+// order, not in the order of the addresses its elements got, so every run gives the same skeleton.
 //
 // This is the one translation unit that instantiates CGAL's flow, and it takes and returns plain
 // arrays on purpose: compiled in one unit with the surface simplification and the rest of the

@@ -22,9 +22,8 @@ struct SkeletonOptions {
   double qualitySpeedTradeoff = 0.1;  // CGAL's omega_H: higher keeps the mesh nearer its shape
   double medialSpeedTradeoff = 0.2;   // CGAL's omega_P: higher pulls harder towards the medial axis
   // Largest z fall (mm) along a single chain still called monotone; < 0 picks 2 % of the part's
-  // bounding-box diagonal. The contraction leaves a few nodes out of order, by a different amount
-  // each run (CGAL orders its collapses by address): up to 0.95 % of the diagonal on an upright
-  // cone in 30 runs.
+  // bounding-box diagonal. The contraction leaves a few nodes out of order, by up to 0.95 % of the
+  // diagonal on an upright cone.
   double monotoneTolerance = -1.0;
   // Surfaces with more faces are simplified (edge collapse) to about this many before the flow;
   // 0 keeps every face. The flow's cost grows faster than the face count, and the curve it ends
