@@ -180,8 +180,6 @@ def main(src, out):
     write_stl(o("junction_coarse_cm.stl"), collapse_to(fine, 4000), b"gmsh bifurcation.stl coarsened (GPL-2.0+)")
     dome = read_any(s("pmp_hemisphere.off"))
     write_obj(o("dome_cap_in.obj"), dome, "pmp-library data/off/hemisphere.off (MIT), as OBJ")
-    bunny = cut_below(y_up_to_z_up(read_any(s("pmp_bunny_adaptive.off"))), 0.040)
-    write_ply(o("bunny_shell_m.ply"), bunny, "Stanford Bunny via pmp-library bunny_adaptive.off, Z-up, base cut")
 
 
 if __name__ == "__main__":
