@@ -99,6 +99,8 @@ TEST(DepositCheck, RingLiftedIntoMidAirIsUnsupportedAndItsSeamAJump)
   EXPECT_EQ(lifted.kind, DepositDefect::Unsupported);
   EXPECT_NEAR(lifted.height, 32.0, 1e-6);
   EXPECT_NE(r.summary().find("in mid-air"), std::string::npos) << r.summary();
+  // The measured range covers the rejected points too.
+  EXPECT_NEAR(r.heightMax, 32.0, 1e-6);
 }
 
 TEST(DepositCheck, PointPushedUnderThePreviousRingLiesBelowTheDeposit)

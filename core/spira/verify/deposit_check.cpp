@@ -380,16 +380,18 @@ DepositCheckReport checkDeposits(const Trajectory& path, const TriangleMesh* sur
     ++r.pointsChecked;
     if (height[i] == kEnded) continue;
     const double h = height[i];
+    if (std::isfinite(h)) {
+      ++supported;
+      sum += h;
+      lo = std::min(lo, h);
+      hi = std::max(hi, h);
+    }
     bool ok = false;
     const DepositDefect kind = classify(h, settings, &ok);
     if (!ok) {
       flags.push_back({i, kind, h, L.points[i]});
       continue;
     }
-    ++supported;
-    sum += h;
-    lo = std::min(lo, h);
-    hi = std::max(hi, h);
     r.plannedDifferenceMax = std::max(r.plannedDifferenceMax, std::abs(h - path.points[i].height));
   }
   if (supported) {

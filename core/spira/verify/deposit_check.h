@@ -32,8 +32,9 @@ struct DepositFlag {
 };
 
 struct DepositCheckReport {
-  size_t pointsChecked = 0;                                   // arc-on points
-  double heightMin = 0.0, heightMax = 0.0, heightMean = 0.0;  // measured, over supported points, mm
+  size_t pointsChecked = 0;  // arc-on points
+  // Measured, over every point with material below it (flagged ones included), mm.
+  double heightMin = 0.0, heightMax = 0.0, heightMean = 0.0;
   // Largest |measured - planned| over points within the window, mm: how far the planned height
   // channel is from what the path itself lays.
   double plannedDifferenceMax = 0.0;
