@@ -104,9 +104,6 @@ const KnownFailure* knownFailure(const std::string& file, const std::string& str
        "with no hint in others",
        false},
       {"tube_straight_wall.stl", "*", kNoAdvice},
-      {"hepa_filter_assembly.step", "*",
-       "a STEP assembly of 8 parts is refused with 'repair the mesh ... make it manifold'; it should say the "
-       "file holds several pieces and to import one part at a time"},
       {"y_branch_artery_m.stl", "*", kBranchesAsHoles},
       {"junction_fine_cm.stl", "*", kBranchesAsHoles},
       {"junction_coarse_cm.stl", "*", kBranchesAsHoles},

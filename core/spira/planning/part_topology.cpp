@@ -42,10 +42,14 @@ void refuseDefects(const MeshReport& report)
 PartTopology findPartTopology(const MeshReport& report, const TriangleMesh& mesh, double substrateZ,
                               int lowerOverride, bool allowBranches)
 {
+  // Several pieces first: an assembly's pieces touching one another read as defects of one mesh.
+  if (report.componentCount > 1)
+    throw InputError("the file holds " + std::to_string(report.componentCount) +
+                         " separate pieces (an assembly, or a part with loose bits)",
+                     "import one thin-walled part at a time: export that part alone from the CAD tool");
   refuseDefects(report);
   if (report.componentCount != 1)
-    throw InputError("the part has " + std::to_string(report.componentCount) + " separate pieces",
-                     "import one thin-walled part at a time");
+    throw InputError("the part has no piece to plan", "import a part with a surface");
   const auto& loops = report.boundaryLoops;
   if (loops.empty())
     throw InputError("the part cannot be planned: " + report.classReason,
