@@ -98,8 +98,10 @@ TEST_P(PlanTwice, GivesTheSamePlanAndProgramToTheBit)
   const Planned second = plan(part, c);
   ASSERT_EQ(first.plan.has_value(), second.plan.has_value()) << first.refusal << second.refusal;
   if (!first.plan) {
+    // A strategy that refuses the part must refuse it the same way every time.
+    EXPECT_FALSE(first.refusal.empty());
     EXPECT_EQ(first.refusal, second.refusal);
-    GTEST_SKIP() << c.name << " does not plan " << c.part.file << ": " << first.refusal;
+    return;
   }
   const PlanOutput& a = *first.plan;
   const PlanOutput& b = *second.plan;

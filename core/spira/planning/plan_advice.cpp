@@ -68,12 +68,8 @@ class Trial {
   bool plans(const std::string& strategy, const std::optional<Window>& window, const std::string& label)
   {
     --left_;
-    PlanRequest r(request_.mesh, request_.report);
-    r.substrateZ = request_.substrateZ;
-    r.lowerLoopOverride = request_.lowerLoopOverride;
+    PlanRequest r = request_;
     r.decomposerId = strategy;
-    r.closureFinderId = request_.closureFinderId;
-    r.params = request_.params;
     if (window) {
       r.params["spiral"].set("h_min", window->hMin);
       r.params["spiral"].set("h_max", window->hMax);

@@ -44,12 +44,8 @@ StrategyOutcome planWith(const PluginRegistry& registry, const PlanRequest& requ
   StrategyOutcome s;
   s.strategy = id;
   s.kind = "ctpp";
-  PlanRequest r(request.mesh, request.report);
-  r.substrateZ = request.substrateZ;
-  r.lowerLoopOverride = request.lowerLoopOverride;
+  PlanRequest r = request;
   r.decomposerId = id;
-  r.closureFinderId = request.closureFinderId;
-  r.params = request.params;
   const auto start = Clock::now();
   try {
     const PlanOutput plan = planPart(registry, r, progress);

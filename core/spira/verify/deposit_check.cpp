@@ -126,8 +126,12 @@ class HeightProbe {
     double substrate = kInf;
     if (c.b.z() >= kSubstrateMinBz) substrate = (c.p.z() - s_.substrateZ) / c.b.z();
     if (substrate < -above()) substrate = kInf;
-    const double below = walk(i, c, substrate, scratch);
-    return std::isfinite(below) ? below : closestBelow(i, c, scratch);
+    const double below =
+        walk(i, c, substrate, scratch, [this](const Column& col, size_t j) { return crossing(col, j); });
+    if (std::isfinite(below)) return below;
+    // Where no segment crosses a plane under the point (a sharp turn), the nearest one passing
+    // within half a bead of the column counts.
+    return walk(i, c, kInf, scratch, [this](const Column& col, size_t j) { return closest(col, j); });
   }
 
   // Distance from the point to the nearest material laid before it, up to `reach`.
@@ -199,10 +203,12 @@ class HeightProbe {
     scratch.erase(std::unique(scratch.begin(), scratch.end()), scratch.end());
   }
 
-  // Walks down the column one cell at a time: every crossing with a depth in the cell's stretch
-  // lies within the stretch's box grown by half a bead, so once a crossing no deeper than the
-  // stretch is found, deeper stretches cannot change it.
-  double walk(size_t i, const Column& c, double best, std::vector<uint32_t>& scratch) const
+  // Walks down the column one cell at a time, keeping the shallowest depth `depthOf` gives a
+  // segment laid before the point: every depth in a cell's stretch comes from a segment within the
+  // stretch's box grown by half a bead, so once one no deeper than the stretch is found, deeper
+  // stretches cannot change it. Starts from `best` (the substrate, when it lies under the point).
+  template <typename DepthOf>
+  double walk(size_t i, const Column& c, double best, std::vector<uint32_t>& scratch, DepthOf depthOf) const
   {
     const double step = grid_.cell();
     for (double t0 = -above(); t0 < depthEnd_ && best > t0; t0 += step) {
@@ -210,25 +216,7 @@ class HeightProbe {
       for (uint32_t s : scratch) {
         const size_t j = grid_.from(s);
         if (!laidBefore(j, i) || !sameSide(c, j)) continue;
-        const double t = crossing(c, j);
-        if (t >= -above() && t < best) best = t;
-      }
-    }
-    return best;
-  }
-
-  // Where no segment crosses a plane under the point (a sharp turn), the nearest one passing
-  // within half a bead of the column counts.
-  double closestBelow(size_t i, const Column& c, std::vector<uint32_t>& scratch) const
-  {
-    double best = kInf;
-    const double step = grid_.cell();
-    for (double t0 = -above(); t0 < depthEnd_ && best > t0; t0 += step) {
-      near(c, t0, scratch);
-      for (uint32_t s : scratch) {
-        const size_t j = grid_.from(s);
-        if (!laidBefore(j, i) || !sameSide(c, j)) continue;
-        const double t = closest(c, j);
+        const double t = depthOf(c, j);
         if (t >= -above() && t < best) best = t;
       }
     }
