@@ -78,6 +78,12 @@ PlanOutput planOrAdvise(const PluginRegistry& registry, const PlanRequest& reque
 {
   try {
     return planPart(registry, request, progress);
+  } catch (const TooShortError& e) {
+    const PlanAdvice advice = adviseSmallerDeposit(registry, request, e, progress);
+    if (advice.found) throw InputError(e.what(), advice.text());
+    std::string hint = e.hint();
+    for (const std::string& t : advice.tried) hint += "; tried: " + t;
+    throw InputError(e.what(), hint);
   } catch (const InputError& e) {
     const PlanAdvice advice = adviseChange(registry, request, nullptr, progress, 2);
     if (!advice.found) throw;

@@ -89,9 +89,6 @@ const KnownFailure* knownFailure(const std::string& file, const std::string& str
   static const std::string kNoAdvice =
       "the deposit check rejects the plan (thin and thick beads, on the vase also beads in mid-air and under "
       "earlier ones): the spiral builder does not yet lay this real wall inside the window";
-  static const std::string kBranchesAsHoles =
-      "a real branching wall (three open ends) is refused as 'a hole or several branches ... its contours "
-      "do not part into branches ... fill holes': the branches are not holes, the message misleads";
   static const std::vector<KnownFailure> known = {
       {"vase_honeycomb_wall.stl", "*", kNoAdvice},
       {"tube_straight_wall.stl", "envelope_projection",
@@ -103,10 +100,11 @@ const KnownFailure* knownFailure(const std::string& file, const std::string& str
        "the same command ends in exit 3 with a hint (use the iso-value strategy) in some runs and in exit 4 "
        "with no hint in others",
        false},
-      {"tube_straight_wall.stl", "*", kNoAdvice},
-      {"y_branch_artery_m.stl", "*", kBranchesAsHoles},
-      {"junction_fine_cm.stl", "*", kBranchesAsHoles},
-      {"junction_coarse_cm.stl", "*", kBranchesAsHoles},
+      {"tube_straight_wall.stl", "*",
+       "the deposit check rejects the plan by a few beads: iso-value and envelope 10-12 points 1-2 % outside "
+       "the window (1.765 .. 2.235 mm for 1.8 .. 2.2) where the wall leans into its waist, z 7-11 mm, during "
+       "the start-up (the ramp stretch does not fully make up the lean at a ramp's ends); geodesic more "
+       "(its generatrices wander on the coarse CAD facets)"},
       {"dome_cap_in.obj", "isovalue",
        "the deposit check rejects the plan: 123 beads thicker than h_max + tol (up to 2.44 mm, from the "
        "second revolution over the jagged rim on) and a point below the deposit"},

@@ -12,6 +12,7 @@
 #include "spira/field/heat_distance.h"
 #include "spira/path/spiral_builder.h"
 #include "spira/planning/branch_plan.h"
+#include "spira/planning/branch_refusal.h"
 #include "spira/planning/plan_schemas.h"
 #include "spira/planning/stage_clock.h"
 
@@ -236,13 +237,7 @@ PlanOutput planPart(const PluginRegistry& registry, const PlanRequest& request, 
   clock.lap("branches");
   if (pieces.pieces.size() < 2) {
     if (out.topology.branched)
-      throw InputError(
-          "the part cannot be planned: it has " + std::to_string(request.report.boundaryLoops.size()) +
-              " free edges but its walls do not part into branches, so at least one free edge "
-              "is a hole in a wall",
-          "close the hole(s) in the CAD or mesh tool ('spira-cli info' lists the loops and their "
-          "heights): Spira plans walls with one free edge on the substrate, at most one on top, "
-          "and one more per branch");
+      refuseUnbranchedPart(request.report.boundaryLoops, perimeter, settings.process.beadWidth);
     finishMonoBranch(registry, request, settings, out, clock, progress);
     judgeDeposits(request, settings, out, progress);
     clock.lap("deposit check");
