@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <utility>
 
 #include "mesh_test_shapes.h"
 #include "spira/mesh/mesh_primitives.h"
@@ -61,6 +62,16 @@ TEST(ThinWall, TubeMidSurfaceIsTheMiddleCylinderOpenAtBothEnds)
     const Vec3 c = (mid.vertices[t[0]] + mid.vertices[t[1]] + mid.vertices[t[2]]) / 3.0;
     EXPECT_GT(mid.faceNormal(f).dot(Vec3(c.x(), c.y(), 0.0)), 0.0);
   }
+}
+
+TEST(ThinWall, InsideOutExportIsMeasuredTheRightWayOut)
+{
+  TriangleMesh tube = makeTubeSolid(kR, kr, kH, 128, 24);
+  for (Face& f : tube.faces) std::swap(f[1], f[2]);
+  const ThinWallAnalysis a = analyseClosedSolid(tube);
+  ASSERT_EQ(a.kind, SolidKind::ThinWalled) << a.reason;
+  EXPECT_NEAR(a.thickness.median, kR - kr, 0.02);
+  for (const Vec3& v : a.midSurface.vertices) EXPECT_NEAR(std::hypot(v.x(), v.y()), 0.5 * (kR + kr), 0.02);
 }
 
 TEST(ThinWall, SolidCylinderIsBulk)

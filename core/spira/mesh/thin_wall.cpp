@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdint>
 #include <iomanip>
+#include <limits>
 #include <sstream>
 #include <utility>
 
@@ -56,7 +57,14 @@ std::vector<FaceRay> castInwardRays(const TriangleMesh& mesh, double diagonal)
   return rays;
 }
 
-// Area-weighted percentiles of (value, area) pairs; `samples` is sorted in place.
+double signedVolume(const TriangleMesh& m)
+{
+  double v = 0.0;
+  for (const Face& f : m.faces) v += m.vertices[f[0]].dot(m.vertices[f[1]].cross(m.vertices[f[2]]));
+  return v / 6.0;
+}
+
+// The value at area fraction p of (value, area) pairs sorted by value.
 double areaPercentile(const std::vector<std::pair<double, double>>& sorted, double total, double p)
 {
   double sum = 0.0;
@@ -186,8 +194,15 @@ std::string describe(const ThinWallAnalysis& a)
 
 }  // namespace
 
-ThinWallAnalysis analyseClosedSolid(const TriangleMesh& mesh)
+ThinWallAnalysis analyseClosedSolid(const TriangleMesh& input)
 {
+  // An export with every face turned inside out is still one solid: measured the right way out.
+  TriangleMesh flipped;
+  if (signedVolume(input) < 0.0) {
+    flipped = input;
+    for (Face& f : flipped.faces) std::swap(f[1], f[2]);
+  }
+  const TriangleMesh& mesh = flipped.empty() ? input : flipped;
   ThinWallAnalysis a;
   a.diagonal = mesh.bounds().diagonal();
   if (mesh.empty() || !(a.diagonal > 0.0)) {

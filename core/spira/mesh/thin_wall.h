@@ -42,8 +42,9 @@ constexpr double kRimFactor = 3.0;
 
 // Measures the wall thickness of a closed, outward-oriented mesh by casting a ray from each face's
 // centroid along its inward normal to the opposite skin, classifies it and, when it is thin-walled,
-// extracts the mid-surface. Callers pass one watertight component (validateMesh finds no
-// boundary loop); other meshes come out Bulk or with a mid-surface of their own shape.
+// extracts the mid-surface. Callers pass one watertight, consistently oriented component
+// (validateMesh finds no boundary loop and no defect); one oriented inside out is measured turned
+// the right way. Other meshes come out Bulk or with a mid-surface of their own shape.
 ThinWallAnalysis analyseClosedSolid(const TriangleMesh& mesh);
 
 }  // namespace spira
