@@ -12,6 +12,7 @@
 #include "spira/mesh/mesh_primitives.h"
 #include "spira/mesh/thin_wall.h"
 #include "spira/planning/planner.h"
+#include "spira/planning/strategy_compare.h"
 #include "support/test_support.h"
 
 namespace spira::test {
@@ -82,6 +83,22 @@ TEST(SolidPlan, MidSurfaceCanBeTurnedOff)
   const std::string text = refusal(makeTubeSolid(40.0, 36.0, 60.0, 96, 20), false);
   EXPECT_NE(text.find("watertight"), std::string::npos) << text;
   EXPECT_NE(text.find("--no-mid-surface"), std::string::npos) << text;
+}
+
+TEST(SolidPlan, CompareRunsEveryStrategyAndThePlanarBaselineOnTheMidSurface)
+{
+  // Taller than wide, so the envelope strategy's skeleton is the tube's axis.
+  const TriangleMesh tube = makeTubeSolid(20.0, 17.0, 80.0, 96, 40);
+  const MeshReport report = validateMesh(tube);
+  const PlanRequest request(tube, report);
+  NullProgress progress;
+  const Comparison c = compareStrategies(builtinRegistry(), request, progress);
+  ASSERT_FALSE(c.strategies.empty());
+  for (const StrategyOutcome& s : c.strategies) {
+    EXPECT_TRUE(s.ran) << s.strategy << ": " << s.failure;
+    for (size_t i = 0; i < s.points.size(); i += 50)
+      EXPECT_NEAR(std::hypot(s.points[i].x(), s.points[i].y()), 18.5, 0.1) << s.strategy << " point " << i;
+  }
 }
 
 ImportedPart corpus(const std::string& file)

@@ -10,7 +10,6 @@
 #include "spira/contour/branch_levels.h"
 #include "spira/field/harmonic_field.h"
 #include "spira/field/heat_distance.h"
-#include "spira/mesh/thin_wall.h"
 #include "spira/path/spiral_builder.h"
 #include "spira/planning/branch_plan.h"
 #include "spira/planning/plan_schemas.h"
@@ -175,12 +174,10 @@ PlanOutput planSolid(const PluginRegistry& registry, const PlanRequest& request,
 {
   progress.report(0.0, "mid-surface of the solid");
   const auto start = std::chrono::steady_clock::now();
-  SolidWall wall =
-      solidWallOf(analyseClosedSolid(request.mesh), request.mesh.faceCount(), settings.process.beadWidth);
-  const MeshReport midReport = validateMesh(*wall.midSurface);
-  requireOneWall(wall, midReport);
+  SolidSurface surface = plannableMidSurface(request.mesh, settings.process.beadWidth);
+  SolidWall& wall = surface.wall;
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  PlanRequest mid(*wall.midSurface, midReport, request);
+  PlanRequest mid(*wall.midSurface, surface.report, request);
   mid.midSurfaceOfSolid = false;
   PlanOutput out;
   try {

@@ -93,6 +93,15 @@ void requireOneWall(const SolidWall& wall, const MeshReport& midReport)
       "lay or machine the flange separately)");
 }
 
+SolidSurface plannableMidSurface(const TriangleMesh& solid, double beadWidth)
+{
+  SolidSurface s;
+  s.wall = solidWallOf(analyseClosedSolid(solid), solid.faceCount(), beadWidth);
+  s.report = validateMesh(*s.wall.midSurface);
+  requireOneWall(s.wall, s.report);
+  return s;
+}
+
 std::string SolidWall::summary() const
 {
   std::ostringstream s;

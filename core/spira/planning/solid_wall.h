@@ -45,6 +45,16 @@ SolidWall solidWallOf(const ThinWallAnalysis& analysis, size_t solidFaces, doubl
 // of the mid-surface when there is one (a flange, a floor, a lid), the usual cause.
 void requireOneWall(const SolidWall& wall, const MeshReport& midReport);
 
+// What a closed solid is planned on: its mid-surface with its validation report.
+struct SolidSurface {
+  SolidWall wall;
+  MeshReport report;  // validateMesh(*wall.midSurface)
+};
+
+// analyseClosedSolid, solidWallOf and requireOneWall in one: the mid-surface of a closed solid
+// (isClosedSolid), or InputError saying why it has none Spira can plan.
+SolidSurface plannableMidSurface(const TriangleMesh& solid, double beadWidth);
+
 // The bead-width warnings alone (empty when the wall is within the rule's range).
 std::vector<std::string> beadWidthWarnings(const WallThickness& thickness, double beadWidth);
 
