@@ -1,9 +1,9 @@
 #include "spira/planning/planner.h"
 
+#include <algorithm>
+#include <chrono>
 #include <iomanip>
 #include <sstream>
-
-#include <algorithm>
 
 #include "spira/base/error.h"
 #include "spira/base/units.h"
@@ -168,6 +168,33 @@ void judgeDeposits(const PlanRequest& request, const Settings& settings, PlanOut
   }
 }
 
+// A thin-walled solid planned on its mid-surface; the solid's own refusals (a bulk body) and its
+// mid-surface's (a flange, a hole) name the solid, so the user knows which surface was judged.
+PlanOutput planSolid(const PluginRegistry& registry, const PlanRequest& request, const Settings& settings,
+                     Progress& progress)
+{
+  progress.report(0.0, "mid-surface of the solid");
+  const auto start = std::chrono::steady_clock::now();
+  SolidSurface surface = plannableMidSurface(request.mesh, settings.process.beadWidth);
+  SolidWall& wall = surface.wall;
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  PlanRequest mid(*wall.midSurface, surface.report, request);
+  mid.midSurfaceOfSolid = false;
+  PlanOutput out;
+  try {
+    out = planPart(registry, mid, progress);
+  } catch (const InputError& e) {
+    std::ostringstream what;
+    what << std::fixed << std::setprecision(2) << "the part is a thin-walled solid (wall "
+         << wall.thickness.median << " mm thick) but its mid-surface cannot be planned: " << e.what();
+    throw InputError(what.str(), e.hint());
+  }
+  out.timings.insert(out.timings.begin(), {"mid-surface", seconds});
+  out.warnings.insert(out.warnings.begin(), wall.warnings.begin(), wall.warnings.end());
+  out.solid = std::move(wall);
+  return out;
+}
+
 }  // namespace
 
 PlanOutput planMonoBranch(const PluginRegistry& registry, const PlanRequest& request, Progress& progress)
@@ -188,6 +215,8 @@ PlanOutput planMonoBranch(const PluginRegistry& registry, const PlanRequest& req
 PlanOutput planPart(const PluginRegistry& registry, const PlanRequest& request, Progress& progress)
 {
   const Settings settings = settingsFor(registry, request);
+  if (request.midSurfaceOfSolid && isClosedSolid(request.report))
+    return planSolid(registry, request, settings, progress);
   PlanOutput out;
   StageClock clock(out.timings);
   out.topology = findPartTopology(request.report, request.mesh, request.substrateZ, request.lowerLoopOverride,
