@@ -114,8 +114,9 @@ const KnownFailure* knownFailure(const std::string& file, const std::string& str
       // Its mid-surface is its wall surface moved in by half the wall (1.25 to 3.15 mm): it fails
       // as the wall does, plus the groove's step in the mid-surface.
       {"tube_straight_solid.stl", "isovalue",
-       "planned on its mid-surface (wall 2.45 mm), the deposit check rejects the plan: 42 beads thinner "
-       "than h_min low down, where the mid-surface steps in and out round the groove (1.25 mm wall)"},
+       "planned on its mid-surface (wall 2.45 mm), the deposit check rejects the plan: 4 beads 1 % thinner "
+       "than h_min and 2 thicker than h_max low down, where the mid-surface steps in and out round the "
+       "groove (1.25 mm wall)"},
       {"tube_straight_solid.stl", "geodesic",
        "planned on its mid-surface (wall 2.45 mm), the deposit check rejects the plan: thousands of points "
        "under material already laid, thin and thick beads and beads in mid-air, as on its wall surface"},
