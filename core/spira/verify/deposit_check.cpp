@@ -3,13 +3,13 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <iomanip>
 #include <limits>
 #include <map>
 #include <sstream>
 
 #include <tbb/parallel_for.h>
 
+#include "spira/base/number_text.h"
 #include "spira/verify/segment_grid.h"
 #include "spira/verify/surface_coverage.h"
 
@@ -249,16 +249,9 @@ DepositDefect classify(double h, const DepositCheckSettings& s, bool* ok)
   return DepositDefect::Unsupported;
 }
 
-std::string fixed(double v, int digits = 2)
-{
-  std::ostringstream o;
-  o << std::fixed << std::setprecision(digits) << v;
-  return o.str();
-}
-
 std::string at(const Vec3& p)
 {
-  return "(" + fixed(p.x(), 1) + ", " + fixed(p.y(), 1) + ", " + fixed(p.z(), 1) + ")";
+  return "(" + fixedText(p.x(), 1) + ", " + fixedText(p.y(), 1) + ", " + fixedText(p.z(), 1) + ")";
 }
 
 std::string describe(const DepositFlag& f)
@@ -266,16 +259,17 @@ std::string describe(const DepositFlag& f)
   const std::string where = "point " + std::to_string(f.point) + " at " + at(f.position) + " mm";
   switch (f.kind) {
     case DepositDefect::BelowDeposit:
-      return where + " lies " + fixed(-f.height) + " mm under material already laid";
+      return where + " lies " + fixedText(-f.height, 2) + " mm under material already laid";
     case DepositDefect::Thin:
-      return where + " would lay a " + fixed(f.height) + " mm bead";
+      return where + " would lay a " + fixedText(f.height, 2) + " mm bead";
     case DepositDefect::Thick:
-      return where + " would need a " + fixed(f.height) + " mm bead";
+      return where + " would need a " + fixedText(f.height, 2) + " mm bead";
     case DepositDefect::Unsupported:
-      return where + (std::isfinite(f.height) ? " is " + fixed(f.height) + " mm above the material below it"
-                                              : " has nothing below it");
+      return where + (std::isfinite(f.height)
+                          ? " is " + fixedText(f.height, 2) + " mm above the material below it"
+                          : " has nothing below it");
     case DepositDefect::Jump:
-      return where + " is reached by a " + fixed(f.height) + " mm jump with the arc on";
+      return where + " is reached by a " + fixedText(f.height, 2) + " mm jump with the arc on";
   }
   return where;
 }
@@ -314,9 +308,9 @@ std::string DepositCheckReport::summary() const
     sep = "; ";
   }
   if (coverageChecked && uncoveredArea > 0.0)
-    o << sep << fixed(100.0 * uncoveredFraction(), 1) << " % of the surface (" << fixed(uncoveredArea, 0)
-      << " mm^2) is not covered, up to " << fixed(largestGap, 1) << " mm from the path at "
-      << at(largestGapAt) << " mm";
+    o << sep << fixedText(100.0 * uncoveredFraction(), 1) << " % of the surface ("
+      << fixedText(uncoveredArea, 0) << " mm^2) is not covered, up to " << fixedText(largestGap, 1)
+      << " mm from the path at " << at(largestGapAt) << " mm";
   return o.str();
 }
 
