@@ -62,16 +62,17 @@ int cmdCompare(const std::vector<std::string>& argv)
   std::vector<FlagTarget> targets = flags.targets;
   targets.insert(targets.end(), importFlags.targets().begin(), importFlags.targets().end());
   if (args.takeSwitch("--help")) {
-    std::cout << "usage: spira-cli compare PART -o DIR [--lower-loop N] [--substrate-z Z] [--drop] "
-                 "[parameter flags]\n\n"
-                 "Plans PART with every decomposition strategy in the same process window, slices it\n"
-                 "with horizontal planes every h as the 2.5D reference (each point's deposit is its\n"
-                 "distance to the layer below; the upper edge is the last layer), and writes\n"
-                 "DIR/compare.json (per strategy: feasible or why it failed, generatrix lengths,\n"
-                 "deposit min/max/mean, points outside the window, revolutions, runtime) and\n"
-                 "DIR/compare.csv (strategy,x,y,z,height per point). A strategy that fails is listed,\n"
-                 "not an error; exit code 4 when no strategy plans the part feasibly.\n\n"
-              << kPlacementHelp << paramFlagsHelp(targets);
+    std::cout
+        << "usage: spira-cli compare PART -o DIR [--lower-loop N] [--substrate-z Z] [--drop] [--level-base] "
+           "[parameter flags]\n\n"
+           "Plans PART with every decomposition strategy in the same process window, slices it\n"
+           "with horizontal planes every h as the 2.5D reference (each point's deposit is its\n"
+           "distance to the layer below; the upper edge is the last layer), and writes\n"
+           "DIR/compare.json (per strategy: feasible or why it failed, generatrix lengths,\n"
+           "deposit min/max/mean, points outside the window, revolutions, runtime) and\n"
+           "DIR/compare.csv (strategy,x,y,z,height per point). A strategy that fails is listed,\n"
+           "not an error; exit code 4 when no strategy plans the part feasibly.\n\n"
+        << kPlacementHelp << paramFlagsHelp(targets);
     return kOk;
   }
   const std::string outDir = args.takeOption("-o");

@@ -73,17 +73,24 @@ void printSummary(const PlanOutput& plan, std::ostream& out)
   for (const auto& w : plan.warnings) out << "warning: " << w << "\n";
 }
 
+// The refusal again, with the advice's change when it plans, or what was tried, in its hint.
+[[noreturn]] void refuseWithAdvice(const InputError& e, const PlanAdvice& advice)
+{
+  if (advice.found) throw InputError(e.what(), advice.text());
+  std::string hint = e.hint();
+  for (const std::string& t : advice.tried) hint += "; tried: " + t;
+  throw InputError(e.what(), hint);
+}
+
 // A part the strategy refuses gets the change that plans it, when one does, in the error's hint.
 PlanOutput planOrAdvise(const PluginRegistry& registry, const PlanRequest& request, Progress& progress)
 {
   try {
     return planPart(registry, request, progress);
   } catch (const TooShortError& e) {
-    const PlanAdvice advice = adviseSmallerDeposit(registry, request, e, progress);
-    if (advice.found) throw InputError(e.what(), advice.text());
-    std::string hint = e.hint();
-    for (const std::string& t : advice.tried) hint += "; tried: " + t;
-    throw InputError(e.what(), hint);
+    refuseWithAdvice(e, adviseSmallerDeposit(registry, request, e, progress));
+  } catch (const BaseNotLevelError& e) {
+    refuseWithAdvice(e, adviseLevelBase(registry, request, e, progress));
   } catch (const InputError& e) {
     const PlanAdvice advice = adviseChange(registry, request, nullptr, progress, 2);
     if (!advice.found) throw;
@@ -114,7 +121,7 @@ int cmdPlan(const std::vector<std::string>& argv)
   if (help) {
     std::cout
         << "usage: spira-cli plan PART -o DIR [--strategy isovalue] [--lower-loop N] [--substrate-z Z] "
-           "[--drop]\n"
+           "[--drop] [--level-base]\n"
            "                       [--no-mid-surface]\n"
            "                       [--cell CELL] [--keep-collisions] [--export krl|fanuc_tp] [--timing]\n"
            "                       [parameter flags]\n\n"
@@ -159,10 +166,8 @@ int cmdPlan(const std::vector<std::string>& argv)
   NullProgress progress;
   ImportedPart part = importFlags.import(positional[0], progress);
   for (const auto& w : part.warnings) std::cerr << "warning: " << w << "\n";
-  const double dropped = placement.apply(part);
-  if (dropped != 0.0)
-    std::cout << "dropped the part " << std::fixed << std::setprecision(3) << dropped
-              << " mm along z onto the substrate (z = " << placement.substrateZ << " mm)\n";
+  const PlacementChange placed = placement.apply(part);
+  std::cout << placed.text(placement.substrateZ);
   const double importSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
   PlanRequest req{part.mesh, part.report};
@@ -176,7 +181,8 @@ int cmdPlan(const std::vector<std::string>& argv)
   plan.timings.insert(plan.timings.begin(), {"import", importSeconds});
 
   nlohmann::json report = planReportJson(plan, strategy);
-  report["dropped_mm"] = dropped;
+  report["dropped_mm"] = placed.dropped;
+  if (placed.levelled) report["levelled_base"] = {{"cut_z_mm", placed.cutZ}, {"removed_mm", placed.removed}};
   std::optional<PlanAdvice> advice;
   if (!plan.feasible()) {
     std::cout << "INFEASIBLE: " << plan.deposits.summary() << "\nlooking for a change that plans it...\n";

@@ -5,23 +5,37 @@
 
 namespace spira::cli {
 
+// What PartPlacement::apply did to the part.
+struct PlacementChange {
+  double dropped = 0.0;  // move along z, mm
+  bool levelled = false;
+  double cutZ = 0.0, removed = 0.0;  // --level-base: the cut plane and the height taken off, mm
+
+  // One line per change for the terminal (empty when nothing changed).
+  std::string text(double substrateZ) const;
+};
+
 // Where the part stands, shared by 'plan' and 'compare': --lower-loop N (as 'info' numbers the
-// loops, from 1), --substrate-z Z (mm) and --drop.
+// loops, from 1), --substrate-z Z (mm), --level-base and --drop.
 struct PartPlacement {
   int lowerLoop = -1;  // 0-based; -1: the lowest loop
   double substrateZ = 0.0;
   bool drop = false;
+  bool levelBase = false;
 
   static PartPlacement take(Args& args);  // throws UsageError for malformed values
-  // With --drop, moves the part along z so its lowest point touches the substrate (as the GUI's
-  // Placement > Drop to Substrate does) and validates it again; returns the move, mm.
-  double apply(ImportedPart& part) const;
+  // With --level-base, cuts the part level through the highest point of its base edge
+  // (level_base.h); with it or --drop, moves the part along z so its lowest point touches the
+  // substrate (as the GUI's Placement > Drop to Substrate does). Validates the result again.
+  PlacementChange apply(ImportedPart& part) const;
 };
 
 inline constexpr const char* kPlacementHelp =
     "  --lower-loop N     the boundary loop the part stands on, numbered from 1 as 'info' lists them\n"
     "                     (default: the lowest loop)\n"
     "  --substrate-z Z    height of the substrate plane in the part's coordinates, mm (default 0)\n"
-    "  --drop             move the part along z until its lowest point touches the substrate\n";
+    "  --drop             move the part along z until its lowest point touches the substrate\n"
+    "  --level-base       cut the part level through the highest point of its base edge (a scan cut\n"
+    "                     at a slant), then drop it onto the substrate\n";
 
 }  // namespace spira::cli

@@ -110,4 +110,22 @@ void requireOnSubstrate(const PartTopology& topology, double substrateZ, double 
   throw InputError(what.str(), hint.str());
 }
 
+void requireLevelBase(const PartTopology& topology, double substrateZ, double tolerance)
+{
+  const double rise = topology.lower.zMax - substrateZ;
+  if (!(rise > tolerance)) return;
+  std::ostringstream what, hint;
+  what << std::fixed << std::setprecision(2) << "the part's base edge (loop " << topology.lowerIndex + 1
+       << ") is not level: it runs from z " << topology.lower.zMin << " to " << topology.lower.zMax
+       << " mm, up to " << rise << " mm above the substrate plane z = " << substrateZ
+       << " mm, where the first revolution can bridge at most " << tolerance
+       << " mm (half the thinnest bead): it would start in mid-air";
+  hint << std::fixed << std::setprecision(2) << "cut the part level at z = " << topology.lower.zMax
+       << " mm and stand it on the substrate (spira-cli plan --level-base does both; the part loses "
+       << topology.lower.zMax - topology.lower.zMin
+       << " mm at its base), or give a part whose base edge lies in "
+       << "one plane";
+  throw BaseNotLevelError(what.str(), hint.str(), topology.lower);
+}
+
 }  // namespace spira

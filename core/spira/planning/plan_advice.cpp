@@ -6,6 +6,8 @@
 
 #include "spira/base/error.h"
 #include "spira/base/number_text.h"
+#include "spira/mesh/mesh_report.h"
+#include "spira/planning/level_base.h"
 #include "spira/planning/plan_schemas.h"
 
 namespace spira {
@@ -200,6 +202,34 @@ PlanAdvice adviseSmallerDeposit(const PluginRegistry& registry, const PlanReques
     advice.tried.push_back(
         "the part's walls are too short for the start-up and closing ramps of any deposit of at least " +
         significantText(kThinnestAdvisedDeposit, 4) + " mm, the thinnest a process lays steadily");
+  return advice;
+}
+
+PlanAdvice adviseLevelBase(const PluginRegistry& registry, const PlanRequest& request,
+                           const BaseNotLevelError& refusal, Progress& progress)
+{
+  PlanAdvice advice;
+  LevelledBase levelled;
+  try {
+    levelled = levelBase(request.mesh, refusal.lower());
+  } catch (const InputError& e) {
+    advice.tried.push_back(std::string("levelling the base: ") + e.what());
+    return advice;
+  }
+  for (Vec3& v : levelled.mesh.vertices) v.z() += request.substrateZ - levelled.cutZ;
+  const MeshReport report = validateMesh(levelled.mesh);
+  PlanRequest r(levelled.mesh, report, request);
+  r.lowerLoopOverride = -1;
+  const std::string change = "cut the part level at z = " + fixedText(levelled.cutZ, 2) +
+                             " mm and stand it on the substrate (" + fixedText(levelled.removed, 2) +
+                             " mm off its base)";
+  Trial trial(registry, request, progress, 1);
+  if (trial.plans(r, change)) {
+    advice.found = true;
+    advice.change = change;
+    advice.flags = "--level-base";
+  }
+  advice.tried = trial.tried;
   return advice;
 }
 

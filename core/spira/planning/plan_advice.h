@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "spira/path/too_short_error.h"
+#include "spira/planning/part_topology.h"
 #include "spira/planning/planner.h"
 
 namespace spira {
@@ -31,6 +32,12 @@ PlanAdvice adviseChange(const PluginRegistry& registry, const PlanRequest& reque
 // h is below kThinnestAdvisedDeposit or its plan is not feasible (then `tried` says why).
 PlanAdvice adviseSmallerDeposit(const PluginRegistry& registry, const PlanRequest& request,
                                 const TooShortError& refusal, Progress& progress);
+
+// For a part refused because its base edge is not level: the part cut level through the edge's
+// highest point and stood on the substrate (level_base.h), planned and checked. `tried` says how
+// the levelled part fails when it does.
+PlanAdvice adviseLevelBase(const PluginRegistry& registry, const PlanRequest& request,
+                           const BaseNotLevelError& refusal, Progress& progress);
 
 // No WAAM process lays a steady bead thinner than this (mm): a smaller h is not advice.
 constexpr double kThinnestAdvisedDeposit = 0.5;

@@ -223,6 +223,7 @@ PlanOutput planPart(const PluginRegistry& registry, const PlanRequest& request, 
                                   /*allowBranches=*/true);
   // Half the thinnest bead: a wider gap leaves the first ring in the air or under the plate.
   requireOnSubstrate(out.topology, request.substrateZ, 0.5 * settings.spiral.hMin);
+  requireLevelBase(out.topology, request.substrateZ, 0.5 * settings.spiral.hMin);
   checkUpperEdge(out.topology, settings);
   clock.lap("topology");
   const double perimeter = branchPerimeter(out, settings);
