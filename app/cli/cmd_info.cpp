@@ -12,6 +12,9 @@
 #include "spira/base/error.h"
 #include "spira/base/units.h"
 #include "spira/io/import_service.h"
+#include "spira/mesh/thin_wall.h"
+#include "spira/path/process_model.h"
+#include "spira/planning/solid_wall.h"
 #include "spira/plugin/param_cli.h"
 #include "spira/plugin/plugin_registry.h"
 #include "spira/skeleton/mcf_skeleton.h"
@@ -99,6 +102,66 @@ void printSkeleton(const SkeletonSection& s, std::ostream& out)
   for (const auto& w : s.result->warnings) out << "warning: " << w << "\n";
 }
 
+// A watertight part: whether it is a thin wall Spira plans on its mid-surface, with the
+// thickness against the default bead (plan --bead-width sets the one it is planned with).
+struct SolidSection {
+  ThinWallAnalysis analysis;
+  MeshReport midReport;
+  double beadWidth = ProcessSettings{}.beadWidth;
+  std::vector<std::string> warnings;
+  double seconds = 0.0;
+};
+
+std::optional<SolidSection> computeSolidSection(const ImportedPart& part)
+{
+  if (!isClosedSolid(part.report)) return std::nullopt;
+  SolidSection s;
+  const auto t0 = std::chrono::steady_clock::now();
+  s.analysis = analyseClosedSolid(part.mesh);
+  if (s.analysis.kind == SolidKind::ThinWalled) {
+    s.midReport = validateMesh(s.analysis.midSurface);
+    s.warnings = beadWidthWarnings(s.analysis.thickness, s.beadWidth);
+  }
+  s.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return s;
+}
+
+nlohmann::json solidJson(const SolidSection& s)
+{
+  const ThinWallAnalysis& a = s.analysis;
+  const bool thin = a.kind == SolidKind::ThinWalled;
+  nlohmann::json j{{"kind", thin ? "thin_walled_solid" : "bulk_solid"},
+                   {"reason", a.reason},
+                   {"wall_thickness_mm",
+                    {{"median", a.thickness.median},
+                     {"thinnest", a.thickness.thinnest},
+                     {"thickest", a.thickness.thickest}}},
+                   {"wall_area_fraction", a.wallAreaFraction},
+                   {"bead_width_mm", s.beadWidth},
+                   {"warnings", s.warnings}};
+  j["planned_on"] = thin ? "mid_surface" : "refused";
+  if (thin)
+    j["mid_surface"] = {{"faces", a.midSurface.faceCount()},
+                        {"boundary_loops", s.midReport.boundaryLoops.size()},
+                        {"class", s.midReport.className()}};
+  return j;
+}
+
+void printSolid(const SolidSection& s, std::ostream& out)
+{
+  const ThinWallAnalysis& a = s.analysis;
+  out << "solid: " << a.reason << "\n";
+  if (a.kind == SolidKind::ThinWalled)
+    out << "  planned on its mid-surface: one skin of " << a.skinFaces << " faces moved in by half the wall, "
+        << s.midReport.boundaryLoops.size() << " boundary loop(s) (" << s.midReport.className()
+        << "); bead width " << std::fixed << std::setprecision(2) << s.beadWidth
+        << " mm (default; plan --bead-width sets it)\n";
+  else
+    out << "  refused by plan: give Spira the wall's mid-surface, or one of its skins, as a surface open at "
+           "the base\n";
+  for (const auto& w : s.warnings) out << "warning: " << w << "\n";
+}
+
 }  // namespace
 
 int cmdInfo(const std::vector<std::string>& argv)
@@ -114,6 +177,8 @@ int cmdInfo(const std::vector<std::string>& argv)
            "the open/closed classification. --json prints the same as JSON; --timing adds stage times.\n"
            "--skeleton adds the part's mean curvature flow curve skeleton: branch count, branch points,\n"
            "loops and whether it rises monotonically in z (free edges are capped for the computation).\n"
+           "A watertight part is measured as a solid: its wall thickness, whether it is a thin wall that\n"
+           "'plan' lays on its mid-surface, or a solid body it refuses (docs/thin-walled-solids.md).\n"
         << paramFlagsHelp(flags.targets());
     return kOk;
   }
@@ -128,6 +193,7 @@ int cmdInfo(const std::vector<std::string>& argv)
   const ImportedPart part = flags.import(file, progress);
   const std::optional<SkeletonSection> skeletonSection =
       skeleton ? std::optional<SkeletonSection>(computeSkeletonSection(part.mesh)) : std::nullopt;
+  const std::optional<SolidSection> solid = computeSolidSection(part);
 
   if (json) {
     nlohmann::json j = part.report.toJson();
@@ -143,6 +209,10 @@ int cmdInfo(const std::vector<std::string>& argv)
                         {"weld", part.seconds.weld},
                         {"validate", part.seconds.validate},
                         {"total", part.seconds.total()}};
+    if (solid) {
+      j["solid"] = solidJson(*solid);
+      if (timing) j["timings_s"]["solid"] = solid->seconds;
+    }
     if (skeletonSection) {
       j["skeleton"] = skeletonJson(*skeletonSection);
       if (timing) j["timings_s"]["skeleton"] = skeletonSection->seconds;
@@ -156,8 +226,10 @@ int cmdInfo(const std::vector<std::string>& argv)
             << " vertices (tolerance " << part.weld.tolerance << " mm)\n";
   std::cout << part.report.toText();
   for (const auto& w : part.warnings) std::cout << "warning: " << w << "\n";
+  if (solid) printSolid(*solid, std::cout);
   if (skeletonSection) printSkeleton(*skeletonSection, std::cout);
   if (timing) printTiming(part, std::cout);
+  if (timing && solid) std::cout << "timing: solid " << solid->seconds << " s\n";
   if (timing && skeletonSection) std::cout << "timing: skeleton " << skeletonSection->seconds << " s\n";
   return kOk;
 }

@@ -78,6 +78,12 @@ PlanOutput planOrAdvise(const PluginRegistry& registry, const PlanRequest& reque
 {
   try {
     return planPart(registry, request, progress);
+  } catch (const TooShortError& e) {
+    const PlanAdvice advice = adviseSmallerDeposit(registry, request, e, progress);
+    if (advice.found) throw InputError(e.what(), advice.text());
+    std::string hint = e.hint();
+    for (const std::string& t : advice.tried) hint += "; tried: " + t;
+    throw InputError(e.what(), hint);
   } catch (const InputError& e) {
     const PlanAdvice advice = adviseChange(registry, request, nullptr, progress, 2);
     if (!advice.found) throw;
@@ -109,6 +115,7 @@ int cmdPlan(const std::vector<std::string>& argv)
     std::cout
         << "usage: spira-cli plan PART -o DIR [--strategy isovalue] [--lower-loop N] [--substrate-z Z] "
            "[--drop]\n"
+           "                       [--no-mid-surface]\n"
            "                       [--cell CELL] [--keep-collisions] [--export krl|fanuc_tp] [--timing]\n"
            "                       [parameter flags]\n\n"
            "Plans one continuous spiral on PART and writes DIR/trajectory.csv and DIR/report.json.\n"
@@ -121,7 +128,10 @@ int cmdPlan(const std::vector<std::string>& argv)
            "path supported inside the process window, no jump with the arc on and the surface covered.\n"
            "Exit code 4 when it is not, or a point is unreachable or collides, or an axis passes its\n"
            "speed limit (see --allow-slowdown): trajectory.csv and report.json are still written (to\n"
-           "inspect), the robot program is not.\n\n"
+           "inspect), the robot program is not.\n"
+           "A watertight thin-walled solid is planned on its mid-surface (its wall thickness is measured\n"
+           "and compared with the bead width); --no-mid-surface refuses it instead. A solid body that is\n"
+           "not a thin wall is refused (docs/thin-walled-solids.md).\n\n"
         << kPlacementHelp << paramFlagsHelp(targets);
     return kOk;
   }
@@ -130,6 +140,7 @@ int cmdPlan(const std::vector<std::string>& argv)
   const PartPlacement placement = PartPlacement::take(args);
   const bool timing = args.takeSwitch("--timing");
   const bool keepCollisions = args.takeSwitch("--keep-collisions");
+  const bool noMidSurface = args.takeSwitch("--no-mid-surface");
   args.rest = consumeParamFlags(args.rest, targets);
   const auto positional = args.finish("plan", 1, 1);
   if (outDir.empty()) throw UsageError("'plan' needs an output folder", "write -o DIR");
@@ -159,7 +170,9 @@ int cmdPlan(const std::vector<std::string>& argv)
   req.lowerLoopOverride = placement.lowerLoop;
   req.substrateZ = placement.substrateZ;
   req.params = planFlags.values;
+  req.midSurfaceOfSolid = !noMidSurface;
   PlanOutput plan = planOrAdvise(registry, req, progress);
+  if (plan.solid) std::cout << plan.solid->summary() << "\n";
   plan.timings.insert(plan.timings.begin(), {"import", importSeconds});
 
   nlohmann::json report = planReportJson(plan, strategy);

@@ -12,6 +12,7 @@
 #include "ray_caster.h"
 #include "spira/base/error.h"
 #include "spira/base/units.h"
+#include "spira/mesh/corner_normals.h"
 
 namespace spira {
 
@@ -42,7 +43,12 @@ struct Failure {
 class Projector {
  public:
   Projector(const TriangleMesh& mesh, const ProjectionAxis& axis, double radius)
-      : mesh_(mesh), caster_(mesh), normals_(mesh.vertexNormals()), axis_(axis), radius_(radius)
+      : mesh_(mesh),
+        caster_(mesh),
+        normals_(mesh.vertexNormals()),
+        corners_(cornerNormals(mesh)),
+        axis_(axis),
+        radius_(radius)
   {
   }
   const std::vector<Vec3>& vertexNormals() const { return normals_; }
@@ -56,7 +62,7 @@ class Projector {
     s.z = z;
     s.position = hit->position;
     s.position.z() = z;  // exact: the ray is horizontal
-    s.normal = surfaceNormalAt(mesh_, normals_, *hit);
+    s.normal = surfaceNormalAt(mesh_, corners_, *hit);
     return s;
   }
 
@@ -64,6 +70,7 @@ class Projector {
   const TriangleMesh& mesh_;
   RayCaster caster_;
   std::vector<Vec3> normals_;
+  std::vector<Vec3> corners_;
   const ProjectionAxis& axis_;
   double radius_;
 };

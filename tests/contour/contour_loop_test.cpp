@@ -7,6 +7,7 @@
 #include "spira/base/units.h"
 #include "spira/contour/contour_loop.h"
 #include "spira/contour/surface_point.h"
+#include "spira/mesh/corner_normals.h"
 #include "spira/mesh/mesh_primitives.h"
 
 namespace spira {
@@ -97,7 +98,7 @@ TEST(SurfacePoint, ClosestPointAndNormals)
 {
   const double R = 10;
   const TriangleMesh mesh = makeOpenCylinder(R, 20, 32, 4);
-  const std::vector<Vec3> vn = mesh.vertexNormals();
+  const std::vector<Vec3> vn = cornerNormals(mesh);
   // A point outside, level with a vertex at angle 0: the closest surface point is that vertex.
   const SurfacePoint p = closestSurfacePoint(mesh, Vec3(R + 3, 0, 10));
   EXPECT_LT((p.position - Vec3(R, 0, 10)).norm(), 1e-12);

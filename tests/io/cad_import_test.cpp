@@ -2,6 +2,7 @@
 // OpenCASCADE and must never include CGAL (OpenCASCADE's Handle macro breaks it).
 #include <gtest/gtest.h>
 
+#include <BRepAlgoAPI_Cut.hxx>
 #include <BRepBuilderAPI_MakeEdge.hxx>
 #include <BRepBuilderAPI_Transform.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
@@ -24,6 +25,7 @@
 #include "io_test_util.h"
 #include "spira/base/atomic_file.h"
 #include "spira/base/error.h"
+#include "spira/planning/planner.h"
 #include "support/test_support.h"
 
 namespace fs = std::filesystem;
@@ -194,6 +196,30 @@ TEST(CadImport, SolidsComeOutWatertightAndFacingOutwards)
   // Inscribed facets lose at most (lateral area) * deflection of volume.
   EXPECT_LT(signedVolume(cyl.mesh), exact);
   EXPECT_GT(signedVolume(cyl.mesh), exact - 2 * M_PI * R * H * deflection);
+}
+
+// A thin-walled tube as CAD models it (a cylinder minus its bore, one solid) takes the road of an
+// STL solid: its wall measured, and planned on its mid-surface.
+TEST(CadImport, StepThinWalledTubeSolidIsPlannedOnItsMidSurface)
+{
+  TempDir dir;
+  const double R = 30.0, r = 27.0, H = 50.0, deflection = 0.01;
+  BRepAlgoAPI_Cut tube(BRepPrimAPI_MakeCylinder(R, H).Shape(), BRepPrimAPI_MakeCylinder(r, H).Shape());
+  ASSERT_TRUE(tube.IsDone());
+  writeStep(tube.Shape(), dir / "tube.step");
+  const ImportedPart part = importWithDeflection(dir / "tube.step", deflection);
+  ASSERT_TRUE(isClosedSolid(part.report)) << part.report.toText();
+  PlanRequest request(part.mesh, part.report);
+  NullProgress progress;
+  const PlanOutput plan = planPart(ioRegistry(), request, progress);
+  ASSERT_TRUE(plan.solid);
+  // Both skins are inscribed polygons within the deflection of their circles.
+  EXPECT_NEAR(plan.solid->thickness.median, R - r, 2 * deflection);
+  const TriangleMesh& mid = *plan.solid->midSurface;
+  EXPECT_EQ(validateMesh(mid).boundaryLoops.size(), 2u);
+  for (const Vec3& v : mid.vertices) EXPECT_NEAR(std::hypot(v.x(), v.y()), 0.5 * (R + r), 2 * deflection);
+  EXPECT_EQ(plan.topology.partClass, PartClass::Open);
+  EXPECT_NEAR(plan.topology.upper->zMin, H, 1e-6);
 }
 
 TEST(CadImport, LocationsArePlacedAndKeepOrientation)

@@ -11,6 +11,7 @@
 #include "spira/contour/branch_detection.h"
 #include "spira/contour/generatrix_chain.h"
 #include "spira/contour/loop_following.h"
+#include "spira/mesh/corner_normals.h"
 
 namespace spira {
 
@@ -64,12 +65,14 @@ size_t dropSpecks(IsoLevel& level, double minLength)
   else
     what = std::to_string(before) + " branches of the part merge into " + std::to_string(after) + " " + where;
   if (after > before)
-    throw InputError(what + ", narrower than a branch Spira plans on its own (a contour at least one bead ring, "
-                            "pi x bead width, and 5 % of the base edge around)",
+    throw InputError(what +
+                         ", narrower than a branch Spira plans on its own (a contour at least one bead ring, "
+                         "pi x bead width, and 5 % of the base edge around)",
                      "remove the narrow branch in the CAD tool or cut the part below it; a narrower bead "
                      "width (--bead-width) lets narrower branches count");
-  throw InputError(what + ": the wall closes around a hole or a handle, which one spiral per branch cannot "
-                          "follow",
+  throw InputError(what +
+                       ": the wall closes around a hole or a handle, which one spiral per branch cannot "
+                       "follow",
                    "cut the part below the merge and plan the pieces on their own");
 }
 
@@ -235,7 +238,7 @@ IsoDecomposition decomposeByIsoValues(const TriangleMesh& mesh, const std::vecto
       shortestLinkedGeneratrix(positions, closure ? std::optional<Vec3>(closure->position) : std::nullopt);
   out.principalIndex = principal.index;
 
-  const std::vector<Vec3> vertexNormals = mesh.vertexNormals();
+  const std::vector<Vec3> normals = cornerNormals(mesh);
   Generatrices& g = out.generatrices;
   const size_t C = out.contours.size();
   g.lines.assign(n, Polyline(C + (closure ? 1 : 0)));
@@ -244,13 +247,13 @@ IsoDecomposition decomposeByIsoValues(const TriangleMesh& mesh, const std::vecto
   if (closure) {
     g.hasClosurePoint = true;
     g.closurePoint = closure->position;
-    closureNormal = surfaceNormalAt(mesh, vertexNormals, *closure);
+    closureNormal = surfaceNormalAt(mesh, normals, *closure);
   }
   tbb::parallel_for(size_t(0), n, [&](size_t m) {
     for (size_t c = 0; c < C; ++c) {
       const SurfacePoint& p = out.contours[c].points[(principal.index[c] + m) % n];
       g.lines[m][c] = p.position;
-      g.normals[m][c] = surfaceNormalAt(mesh, vertexNormals, p);
+      g.normals[m][c] = surfaceNormalAt(mesh, normals, p);
     }
     if (closure) {
       g.lines[m][C] = closure->position;

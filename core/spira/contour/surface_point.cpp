@@ -54,9 +54,11 @@ Vec3 interpolateAt(const TriangleMesh& mesh, const SurfacePoint& p, const std::v
   return p.bary[0] * values[f[0]] + p.bary[1] * values[f[1]] + p.bary[2] * values[f[2]];
 }
 
-Vec3 surfaceNormalAt(const TriangleMesh& mesh, const std::vector<Vec3>& vertexNormals, const SurfacePoint& p)
+Vec3 surfaceNormalAt(const TriangleMesh& mesh, const std::vector<Vec3>& cornerNormals, const SurfacePoint& p)
 {
-  const Vec3 n = interpolateAt(mesh, p, vertexNormals);
+  const size_t c = 3 * static_cast<size_t>(p.face);
+  const Vec3 n =
+      p.bary[0] * cornerNormals[c] + p.bary[1] * cornerNormals[c + 1] + p.bary[2] * cornerNormals[c + 2];
   const double len = n.norm();
   if (len > 1e-9) return n / len;
   return mesh.faceNormal(p.face);

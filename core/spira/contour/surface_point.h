@@ -19,10 +19,10 @@ struct SurfacePoint {
 double interpolateAt(const TriangleMesh& mesh, const SurfacePoint& p, const std::vector<double>& values);
 Vec3 interpolateAt(const TriangleMesh& mesh, const SurfacePoint& p, const std::vector<Vec3>& values);
 
-// The unit surface normal at `p`: the interpolated vertex normals (from mesh.vertexNormals()),
-// normalised, so it varies smoothly across faces. Falls back to the face normal where the
-// interpolated normals cancel out (a knife edge).
-Vec3 surfaceNormalAt(const TriangleMesh& mesh, const std::vector<Vec3>& vertexNormals, const SurfacePoint& p);
+// The unit surface normal at `p`: its face's corner normals (from cornerNormals(mesh)) interpolated
+// and normalised, so it varies smoothly across faces and stops at feature edges. Falls back to the
+// face normal where the interpolated normals cancel out (a knife edge).
+Vec3 surfaceNormalAt(const TriangleMesh& mesh, const std::vector<Vec3>& cornerNormals, const SurfacePoint& p);
 
 // The surface point of `mesh` closest to `q` (brute force over faces: meant for a few queries).
 SurfacePoint closestSurfacePoint(const TriangleMesh& mesh, const Vec3& q);

@@ -108,6 +108,39 @@ TriangleMesh makeRevolved(const std::vector<Eigen::Vector2d>& profile, int segme
   return m;
 }
 
+TriangleMesh makeRevolvedSolid(const std::vector<Eigen::Vector2d>& closedProfile, int segments)
+{
+  require(closedProfile.size() >= 3, "a closed profile needs at least 3 points",
+          "give the profile's corners");
+  for (const Eigen::Vector2d& p : closedProfile)
+    require(p.x() > 0.0, "a solid's closed profile must stay off the axis", "give radii > 0");
+  std::vector<Eigen::Vector2d> profile = closedProfile;
+  profile.push_back(closedProfile.front());
+  TriangleMesh m = makeRevolved(profile, segments);
+  // The last row repeats the first: its vertices (at the end of the list) are mapped onto it.
+  const int lastRow = static_cast<int>(m.vertices.size()) - segments;
+  for (Face& f : m.faces)
+    for (int& v : f)
+      if (v >= lastRow) v -= lastRow;
+  m.vertices.resize(static_cast<size_t>(lastRow));
+  return m;
+}
+
+TriangleMesh makeTubeSolid(double outerRadius, double innerRadius, double height, int segments, int rings)
+{
+  requirePositive(outerRadius, "outer radius");
+  requirePositive(innerRadius, "inner radius");
+  requirePositive(height, "height");
+  requireCounts(segments, rings);
+  require(innerRadius < outerRadius, "the inner radius must be smaller than the outer one",
+          "give an inner radius below the outer radius");
+  // Down the inside, out along the bottom, up the outside, in along the top.
+  std::vector<Eigen::Vector2d> profile;
+  for (int i = 0; i <= rings; ++i) profile.emplace_back(innerRadius, lerp(height, 0.0, i, rings));
+  for (int i = 0; i <= rings; ++i) profile.emplace_back(outerRadius, lerp(0.0, height, i, rings));
+  return makeRevolvedSolid(profile, segments);
+}
+
 TriangleMesh makeOpenCylinder(double radius, double height, int segments, int rings)
 {
   return makeOpenCone(radius, radius, height, segments, rings);

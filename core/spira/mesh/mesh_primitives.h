@@ -21,6 +21,14 @@ TriangleMesh makeHemisphere(double radius, int segments, int rings);
 // r = 0 closes the bottom the same way). Faces look to the right of the profile's direction in
 // the (r, z) half-plane: outwards for a profile running up the outside of the part.
 TriangleMesh makeRevolved(const std::vector<Eigen::Vector2d>& profile, int segments);
+// A solid of revolution: the closed profile (r_i, z_i) with r > 0 (the last point joins the first,
+// without repeating it), faces to the right of its direction as in makeRevolved: a profile running
+// up the outside and down the inside (clockwise in the (r, z) half-plane) faces outwards.
+TriangleMesh makeRevolvedSolid(const std::vector<Eigen::Vector2d>& closedProfile, int segments);
+// A thin-walled tube as a solid (watertight, as CAD exports it): outer skin of `outerRadius`, inner
+// skin of `innerRadius`, from z = 0 to z = height, joined by flat end annuli. `rings` bands
+// along each skin, one across each annulus.
+TriangleMesh makeTubeSolid(double outerRadius, double innerRadius, double height, int segments, int rings);
 // A closed regular tetrahedron (4 faces) centred on the origin, useful as the smallest watertight mesh.
 TriangleMesh makeTetrahedron(double edge);
 // `segments` (at least 3) so that the edges round a circle of `radius` are about `edge` long.

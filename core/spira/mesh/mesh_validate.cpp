@@ -181,9 +181,9 @@ void classify(MeshReport& r, size_t topologyFaces)
                     "or remove the extra pieces";
   } else if (loops == 0) {
     r.classReason =
-        "0 boundary loops: the mesh is watertight (a solid or a closed shell); Spira builds a wall from "
-        "its surface and needs that surface open at the base: export the wall's mid-surface (or one of "
-        "its skins) without the base face";
+        "0 boundary loops: the mesh is watertight (a solid or a closed shell); Spira plans a thin-walled "
+        "solid on its mid-surface (docs/thin-walled-solids.md), any other closed mesh needs its wall "
+        "given as a surface open at the base: the wall's mid-surface (or one of its skins)";
   } else if (loops == 1) {
     r.partClass = PartClass::Closed;
     r.classReason = "1 boundary loop: a closed-top wall (a dome or cap) standing on its open base edge";

@@ -12,6 +12,7 @@
 #include "spira/path/spiral_frames.h"
 #include "spira/path/spiral_input.h"
 #include "spira/path/startup_profile.h"
+#include "spira/path/too_short_error.h"
 
 namespace spira {
 
@@ -66,8 +67,9 @@ void throwTooShort(size_t i, double length, double ramps, double hMin)
   std::ostringstream m;
   m << "generatrix " << i << " is " << length << " mm long, but the start-up and termination ramps take "
     << ramps << " mm of it and the modulated phase needs at least h_min = " << hMin << " mm more";
-  throw InputError(m.str(),
-                   "use a smaller h or a wider window (fewer start-up revolutions), or a taller part");
+  throw TooShortError(m.str(),
+                      "use a smaller h or a wider window (fewer start-up revolutions), or a taller part",
+                      length, ramps + hMin);
 }
 
 // Ramps and layer count. With StartupTransition::UniformHelix the ramps are sized for the layer

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "spira/base/error.h"
+#include "spira/path/too_short_error.h"
 
 namespace spira {
 
@@ -149,6 +150,9 @@ void planBranchPieces(const PluginRegistry& registry, const PlanRequest& whole, 
     PlanOutput plan;
     try {
       plan = planMonoBranch(registry, sub, p);
+    } catch (const TooShortError& e) {
+      throw TooShortError(role(piece, k) + " of the multi-branch part: " + e.what(), e.hint(), e.length(),
+                          e.needed());
     } catch (const InputError& e) {
       throw InputError(role(piece, k) + " of the multi-branch part: " + e.what(), e.hint());
     } catch (const AlgorithmError& e) {

@@ -54,7 +54,8 @@ PartTopology findPartTopology(const MeshReport& report, const TriangleMesh& mesh
   if (loops.empty())
     throw InputError("the part cannot be planned: " + report.classReason,
                      "give Spira the wall as a surface open at its base: its mid-surface, or its inner or "
-                     "outer skin, exported without the base face");
+                     "outer skin, exported without the base face (a thin-walled solid is planned on its "
+                     "mid-surface unless --no-mid-surface)");
   if (loops.size() > 2 && !allowBranches)
     throw InputError("the part cannot be planned as one spiral: " + report.classReason,
                      "plan the whole part (each branch gets its own spiral), or cut it into walls with one "

@@ -150,4 +150,61 @@ PlanAdvice adviseChange(const PluginRegistry& registry, const PlanRequest& reque
   return advice;
 }
 
+PlanAdvice adviseSmallerDeposit(const PluginRegistry& registry, const PlanRequest& request,
+                                const TooShortError& refusal, Progress& progress)
+{
+  PlanAdvice advice;
+  const auto it = request.params.find("spiral");
+  const ParamSet given = it == request.params.end() ? ParamSet() : it->second;
+  const SpiralSettings s = spiralSettingsFrom(given);
+  if (!(refusal.needed() > 0.0) || !(refusal.length() > 0.0)) return advice;
+  // At a fixed relative window the ramps' length is proportional to h, and what is left of the
+  // wall must be a whole number of layers inside the window. Candidates run down the 0.05 mm grid
+  // from the largest h whose ramps and one layer of h_min fit; those whose leftover holds no whole
+  // number of layers (within 1 %, the builder's own slack) are skipped, the others planned, at most
+  // kMaxPlans of them, and the first feasible one is the advice.
+  constexpr int kMaxPlans = 4;
+  const double length = refusal.length(), rampsPerH = (refusal.needed() - s.hMin) / s.h;
+  const double low = s.hMin / s.h, high = s.hMax / s.h;
+  const bool explicitWindow = given.has("h_min") && given.getDouble("h_min") > 0.0;
+  int plans = 0;
+  for (double h = std::floor(length / (rampsPerH + low) / 0.05) * 0.05;
+       h >= kThinnestAdvisedDeposit - 1e-9 && plans < kMaxPlans; h -= 0.05) {
+    h = std::round(h / 0.05) * 0.05;
+    const double rest = length - rampsPerH * h;
+    if (rest < 0.99 * low * h || std::ceil(rest / (high * h)) * low * h > 1.01 * rest) continue;
+    ++plans;
+    PlanRequest r = request;
+    r.params["spiral"].set("h", h);
+    std::string flags = "--h " + text(h);
+    if (explicitWindow) {
+      const double f = h / s.h;
+      const double lo = std::floor(s.hMin * f / 0.01) * 0.01, hi = std::ceil(s.hMax * f / 0.01) * 0.01;
+      r.params["spiral"].set("h_min", lo);
+      r.params["spiral"].set("h_max", hi);
+      flags += " --h-min " + text(lo) + " --h-max " + text(hi);
+    }
+    const std::string change =
+        "lay thinner deposits, h = " + text(h) + " mm, so the start-up and closing ramps fit";
+    try {
+      SubProgress p(progress, 0.0, 1.0, "checking: " + change);
+      const PlanOutput plan = planPart(registry, r, p);
+      if (plan.feasible()) {
+        advice.found = true;
+        advice.change = change;
+        advice.flags = flags;
+        return advice;
+      }
+      advice.tried.push_back(change + ": " + plan.deposits.summary());
+    } catch (const Error& e) {
+      advice.tried.push_back(change + ": " + e.what());
+    }
+  }
+  if (plans == 0)
+    advice.tried.push_back(
+        "the part's walls are too short for the start-up and closing ramps of any deposit of at least " +
+        text(kThinnestAdvisedDeposit) + " mm, the thinnest a process lays steadily");
+  return advice;
+}
+
 }  // namespace spira

@@ -3,6 +3,7 @@
 #include <string>
 #include <vector>
 
+#include "spira/path/too_short_error.h"
 #include "spira/planning/planner.h"
 
 namespace spira {
@@ -23,5 +24,15 @@ struct PlanAdvice {
 // is the infeasible plan (null when the strategy refused the part). At most `maxPlans` plans.
 PlanAdvice adviseChange(const PluginRegistry& registry, const PlanRequest& request, const PlanOutput* failed,
                         Progress& progress, int maxPlans = 4);
+
+// For a part refused because a wall (or a branch's) is too short for the start-up, one layer and
+// the termination at this h: every ramp height scales with h, so the largest h on a 0.05 mm grid
+// that leaves room (the window scaled with it) is planned and checked. Nothing is found when that
+// h is below kThinnestAdvisedDeposit or its plan is not feasible (then `tried` says why).
+PlanAdvice adviseSmallerDeposit(const PluginRegistry& registry, const PlanRequest& request,
+                                const TooShortError& refusal, Progress& progress);
+
+// No WAAM process lays a steady bead thinner than this (mm): a smaller h is not advice.
+constexpr double kThinnestAdvisedDeposit = 0.5;
 
 }  // namespace spira

@@ -165,6 +165,7 @@ nlohmann::json planReportJson(const PlanOutput& plan, const std::string& strateg
   j["feasible"] = plan.feasible();
   j["window_feasible"] = s.feasible;
   j["deposit_check"] = depositCheckJson(plan.deposits);
+  if (plan.solid) j["solid"] = plan.solid->toJson();
   j["length_criterion"] = {
       {"length_min", s.lengthCriterion.lengthMin}, {"length_max", s.lengthCriterion.lengthMax},
       {"n_layers", s.lengthCriterion.nLayers},     {"step_spread", s.lengthCriterion.stepSpread},

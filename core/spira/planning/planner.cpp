@@ -1,9 +1,9 @@
 #include "spira/planning/planner.h"
 
+#include <algorithm>
+#include <chrono>
 #include <iomanip>
 #include <sstream>
-
-#include <algorithm>
 
 #include "spira/base/error.h"
 #include "spira/base/units.h"
@@ -12,6 +12,7 @@
 #include "spira/field/heat_distance.h"
 #include "spira/path/spiral_builder.h"
 #include "spira/planning/branch_plan.h"
+#include "spira/planning/branch_refusal.h"
 #include "spira/planning/plan_schemas.h"
 #include "spira/planning/stage_clock.h"
 
@@ -167,6 +168,33 @@ void judgeDeposits(const PlanRequest& request, const Settings& settings, PlanOut
   }
 }
 
+// A thin-walled solid planned on its mid-surface; the solid's own refusals (a bulk body) and its
+// mid-surface's (a flange, a hole) name the solid, so the user knows which surface was judged.
+PlanOutput planSolid(const PluginRegistry& registry, const PlanRequest& request, const Settings& settings,
+                     Progress& progress)
+{
+  progress.report(0.0, "mid-surface of the solid");
+  const auto start = std::chrono::steady_clock::now();
+  SolidSurface surface = plannableMidSurface(request.mesh, settings.process.beadWidth);
+  SolidWall& wall = surface.wall;
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  PlanRequest mid(*wall.midSurface, surface.report, request);
+  mid.midSurfaceOfSolid = false;
+  PlanOutput out;
+  try {
+    out = planPart(registry, mid, progress);
+  } catch (const InputError& e) {
+    std::ostringstream what;
+    what << std::fixed << std::setprecision(2) << "the part is a thin-walled solid (wall "
+         << wall.thickness.median << " mm thick) but its mid-surface cannot be planned: " << e.what();
+    throw InputError(what.str(), e.hint());
+  }
+  out.timings.insert(out.timings.begin(), {"mid-surface", seconds});
+  out.warnings.insert(out.warnings.begin(), wall.warnings.begin(), wall.warnings.end());
+  out.solid = std::move(wall);
+  return out;
+}
+
 }  // namespace
 
 PlanOutput planMonoBranch(const PluginRegistry& registry, const PlanRequest& request, Progress& progress)
@@ -187,6 +215,8 @@ PlanOutput planMonoBranch(const PluginRegistry& registry, const PlanRequest& req
 PlanOutput planPart(const PluginRegistry& registry, const PlanRequest& request, Progress& progress)
 {
   const Settings settings = settingsFor(registry, request);
+  if (request.midSurfaceOfSolid && isClosedSolid(request.report))
+    return planSolid(registry, request, settings, progress);
   PlanOutput out;
   StageClock clock(out.timings);
   out.topology = findPartTopology(request.report, request.mesh, request.substrateZ, request.lowerLoopOverride,
@@ -236,13 +266,7 @@ PlanOutput planPart(const PluginRegistry& registry, const PlanRequest& request, 
   clock.lap("branches");
   if (pieces.pieces.size() < 2) {
     if (out.topology.branched)
-      throw InputError(
-          "the part cannot be planned: it has " + std::to_string(request.report.boundaryLoops.size()) +
-              " free edges but its walls do not part into branches, so at least one free edge "
-              "is a hole in a wall",
-          "close the hole(s) in the CAD or mesh tool ('spira-cli info' lists the loops and their "
-          "heights): Spira plans walls with one free edge on the substrate, at most one on top, "
-          "and one more per branch");
+      refuseUnbranchedPart(request.report.boundaryLoops, perimeter, settings.process.beadWidth);
     finishMonoBranch(registry, request, settings, out, clock, progress);
     judgeDeposits(request, settings, out, progress);
     clock.lap("deposit check");

@@ -10,6 +10,7 @@
 #include "spira/path/spiral_report.h"
 #include "spira/planning/branch_split.h"
 #include "spira/planning/part_topology.h"
+#include "spira/planning/solid_wall.h"
 #include "spira/planning/stage_clock.h"
 #include "spira/plugin/closure_finder.h"
 #include "spira/plugin/parameter.h"
@@ -18,20 +19,32 @@
 
 namespace spira {
 
-// Everything a plan is computed from. `params` holds the values per plugin id and per settings
-// section ("spiral", "process"), as PlanSettings stores them.
-struct PlanRequest {
-  PlanRequest(const TriangleMesh& m, const MeshReport& r) : mesh(m), report(r) {}
-  const TriangleMesh& mesh;  // welded, in the part frame (z up, substrate plane below)
-  const MeshReport& report;  // validateMesh(mesh)
+// Everything a plan is computed from but the surface. `params` holds the values per plugin id and
+// per settings section ("spiral", "process"), as PlanSettings stores them.
+struct PlanChoices {
   double substrateZ = 0.0;
   int lowerLoopOverride = -1;
   // The material this part stands on lies this far below its lower edge, along the surface (a
   // branch above a junction gap), mm: its first ring is laid measured from there.
   double baseSupportGap = 0.0;
+  // A watertight thin-walled solid is planned on its mid-surface (docs/thin-walled-solids.md);
+  // false refuses it like any closed mesh.
+  bool midSurfaceOfSolid = true;
   std::string decomposerId = "decomposer.isovalue";
   std::string closureFinderId = "closure.max_min_geodesic";
   std::map<std::string, ParamSet> params;
+};
+
+// Everything a plan is computed from.
+struct PlanRequest : PlanChoices {
+  PlanRequest(const TriangleMesh& m, const MeshReport& r) : mesh(m), report(r) {}
+  // The same choices on another surface (a mid-surface, a sub-part).
+  PlanRequest(const TriangleMesh& m, const MeshReport& r, const PlanChoices& choices)
+      : PlanChoices(choices), mesh(m), report(r)
+  {
+  }
+  const TriangleMesh& mesh;  // welded, in the part frame (z up, substrate plane below)
+  const MeshReport& report;  // validateMesh(mesh)
 };
 
 // One sub-path of a plan: a mono-branch sub-part of a multi-branch part, or the whole part.
@@ -82,6 +95,9 @@ struct PlanOutput {
   // lengths summed, extremes over all, violations indexed in the whole trajectory).
   std::vector<PathSummary> paths;
   std::optional<BranchingSummary> branching;  // set for a multi-branch part
+  // Set for a thin-walled solid: everything above (field, topology, deposit check) is of its
+  // mid-surface, SolidWall::midSurface.
+  std::optional<SolidWall> solid;
 
   // The verdict, from the trajectory alone (docs/deposit-check.md); spiral.report keeps the
   // heights the spiral builder planned. Process-limit violations do not make a plan infeasible:
@@ -90,11 +106,11 @@ struct PlanOutput {
   bool feasible() const { return deposits.feasible; }
 };
 
-// Runs the CTPP pipeline: part topology, scalar field (harmonic for open parts; geodesic distance
-// from the base and the closure point for closed ones), decomposition into generatrices, the
-// continuous spiral with its start-up and deposit heights, and the process channels.
-// A multi-branch part (more than two free edges, or a field whose contours part into several
-// loops at least pi x bead width long) is split into mono-branch sub-parts (branch_split.h), each
+// Runs the CTPP pipeline: a watertight thin-walled solid replaced by its mid-surface, part topology, scalar
+// field (harmonic for open parts; geodesic distance from the base and the closure point for closed ones),
+// decomposition into generatrices, the continuous spiral with its start-up and deposit heights, and the
+// process channels. A multi-branch part (more than two free edges, or a field whose contours part into
+// several loops at least pi x bead width long) is split into mono-branch sub-parts (branch_split.h), each
 // planned on its own, trunk first (thesis §3.4.3).
 // Last, the deposit check judges the trajectory on its own (see deposit_check.h).
 // Throws InputError/AlgorithmError for parts or settings it cannot plan; an infeasible plan is a

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <limits>
+#include <optional>
 
 #include <nlohmann/json.hpp>
 
@@ -75,15 +76,23 @@ StrategyOutcome planar(const PlanRequest& request, const Comparison& c, Progress
   s.kind = "planar";
   const auto start = Clock::now();
   try {
-    const PartTopology topology = findPartTopology(request.report, request.mesh, request.substrateZ,
-                                                   request.lowerLoopOverride, /*allowBranches=*/true);
+    // A thin-walled solid is sliced on the mid-surface its CTPP plans run on.
+    std::optional<SolidSurface> solid;
+    if (request.midSurfaceOfSolid && isClosedSolid(request.report)) {
+      auto it = request.params.find("process");
+      const double bead = processSettingsFrom(it == request.params.end() ? ParamSet() : it->second).beadWidth;
+      solid = plannableMidSurface(request.mesh, bead);
+    }
+    const TriangleMesh& mesh = solid ? *solid->wall.midSurface : request.mesh;
+    const MeshReport& report = solid ? solid->report : request.report;
+    const PartTopology topology =
+        findPartTopology(report, mesh, request.substrateZ, request.lowerLoopOverride, /*allowBranches=*/true);
     PlanarBaselineSettings settings;
     settings.h = c.h;
     settings.hMin = c.hMin;
     settings.hMax = c.hMax;
     settings.tolerance = c.tolerance;
-    const PlanarBaseline b =
-        planarBaseline(request.mesh, request.report, topology.lowerIndex, settings, progress);
+    const PlanarBaseline b = planarBaseline(mesh, report, topology.lowerIndex, settings, progress);
     s.runtime = secondsSince(start);
     s.ran = true;
     s.revolutions = b.layers;

@@ -109,7 +109,7 @@ PlanJobResult runPlan(const DocumentState& snapshot, const PluginRegistry& regis
   out.feasible = plan.feasible();
   out.depositSummary = plan.deposits.summary();
   out.warnings = plan.warnings;
-  out.summary = summaryLine(plan);
+  out.summary = plan.solid ? plan.solid->summary() + "; " + summaryLine(plan) : summaryLine(plan);
   out.windowViolations = plan.spiral.report.violations.size();
   out.limitViolations = plan.process.violations.size();
 
@@ -126,7 +126,8 @@ PlanJobResult runPlan(const DocumentState& snapshot, const PluginRegistry& regis
   field->kind = plan.fieldKind;
   field->source = plan.hasClosure ? "heat-method geodesic distance from the base edge"
                                   : "harmonic field, 0 on the base edge and 1 on the upper edge";
-  field->values = std::move(plan.field);
+  // A solid's field lives on its mid-surface, whose vertices are not the part's: not drawn.
+  if (!plan.solid) field->values = std::move(plan.field);
   r.setField(std::move(field));
   nlohmann::json fieldReport{{"kind", plan.fieldKind}, {"timings_s", timingsJson(plan.timings)}};
   if (plan.hasClosure) {
