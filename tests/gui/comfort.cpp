@@ -332,14 +332,16 @@ TEST(InteractiveQuality, FastWhileAJobRunsFullQualityAfterwardsAndInPictures)
       },
       [](const ui::TaskOutcome&) {}, ui::TaskRunner::Display::Signals));
   EXPECT_TRUE(quality->held());
+  // Waits for the frames themselves, not a fixed time: a loaded machine renders later.
+  const size_t before = frames.size();
   w.sceneView()->scheduleRender();  // a frame while the job runs: fast
-  QTest::qWait(50);
+  EXPECT_TRUE(waitFor([&] { return frames.size() > before; }, 10000));
   const size_t captureFrame = frames.size();
   w.captureImage();  // a picture: full quality, then fast again
   EXPECT_TRUE(quality->held());
   EXPECT_TRUE(quality->fast());
   w.sceneView()->scheduleRender();
-  QTest::qWait(50);
+  EXPECT_TRUE(waitFor([&] { return frames.size() > captureFrame + 1; }, 10000));
   finish = true;
   ASSERT_TRUE(waitFor([&] { return !w.taskRunner()->busy(); }, 10000));
   rw->RemoveObserver(tag);

@@ -266,5 +266,20 @@ TEST(PlanningWorkflow, DomeFromImportToProcessChart)
       QStringLiteral("All %1 revolutions and the closure point").arg(rings)));
 }
 
+// A thin-walled CAD solid (the corpus's straight tube, a 2.45 mm wall, median, from 1.25 to 3.15 mm)
+// is planned on its mid-surface, and the verdict says so: the spiral runs inside the drawn solid.
+TEST(PlanningWorkflow, ThinWalledSolidVerdictSaysItIsPlannedOnItsMidSurface)
+{
+  Document doc;
+  MainWindow w(doc, MainWindowOptions{false, false});
+  showAndWait(w);
+  ASSERT_TRUE(openAndWait(w, qpath(sourceDir() / "tests" / "data" / "real" / "tube_straight_solid.stl")));
+  ASSERT_TRUE(planAndWait(w));
+  ASSERT_TRUE(doc.results().spiral) << w.lastErrorMessage().toStdString();
+  const QString verdict = w.planPanel()->verdictLabel()->text();
+  EXPECT_TRUE(verdict.contains("Thin-walled solid, wall 2.45")) << verdict.toStdString();
+  EXPECT_TRUE(verdict.contains("planned on its mid-surface")) << verdict.toStdString();
+}
+
 }  // namespace
 }  // namespace spira::test

@@ -267,6 +267,14 @@ void PlanPanel::refreshVerdict()
     if (const double rampMax = j.value("ramp_height_max", 0.0); rampMax > 0.0)
       lines << tr("Start-up and closing ramps %1 to %2")
                    .arg(mmText(j.value("ramp_height_min", 0.0)), mmText(rampMax));
+    // A thin-walled solid is planned on its mid-surface: say so, or the spiral inside the drawn
+    // solid reads as a path off the part.
+    if (j.contains("solid") && j["solid"].is_object()) {
+      const nlohmann::json wall = j["solid"].value("wall_thickness_mm", nlohmann::json::object());
+      lines << tr("Thin-walled solid, wall %1 (%2 to %3): planned on its mid-surface")
+                   .arg(mmText(wall.value("median", 0.0)), mmText(wall.value("thinnest", 0.0)),
+                        mmText(wall.value("thickest", 0.0)));
+    }
     const nlohmann::json check = j.contains("deposit_check") && j["deposit_check"].is_object()
                                      ? j["deposit_check"]
                                      : nlohmann::json::object();
