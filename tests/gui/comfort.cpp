@@ -309,7 +309,7 @@ TEST(InteractiveQuality, FastWhileAJobRunsFullQualityAfterwardsAndInPictures)
   const int samples = rw->GetMultiSamples();
   ASSERT_GT(samples, 0);
   ASSERT_TRUE(openAndWait(w, domeFile()));
-  ASSERT_TRUE(waitFor([&] { return !quality->fast(); }, 3000));
+  ASSERT_TRUE(waitFor([&] { return !quality->fast(); }, 10000));
   EXPECT_EQ(rw->GetMultiSamples(), samples);
 
   // The multisampling of every frame drawn while the plan runs.
@@ -350,7 +350,7 @@ TEST(InteractiveQuality, FastWhileAJobRunsFullQualityAfterwardsAndInPictures)
   for (size_t i = 0; i < frames.size(); ++i)
     EXPECT_EQ(frames[i], i == captureFrame ? samples : 0) << "frame " << i;
   EXPECT_FALSE(quality->held());
-  ASSERT_TRUE(waitFor([&] { return !quality->fast(); }, 3000));
+  ASSERT_TRUE(waitFor([&] { return !quality->fast(); }, 10000));
   EXPECT_EQ(rw->GetMultiSamples(), samples);
 }
 

@@ -97,15 +97,6 @@ const KnownFailure* knownFailure(const std::string& file, const std::string& str
       "earlier ones): the spiral builder does not yet lay this real wall inside the window";
   static const std::vector<KnownFailure> known = {
       {"vase_honeycomb_wall.stl", "*", kNoAdvice},
-      {"tube_straight_wall.stl", "envelope_projection",
-       "the same command ends in exit 3 ('the part's skeleton does not rise steadily in z') in some runs and "
-       "in exit 4 with no hint (a plan the check finds thin and thick) in others; a straight tube should "
-       "plan, the same way every time",
-       false},
-      {"pot_twisted_wall.stl", "envelope_projection",
-       "the same command ends in exit 3 with a hint (use the iso-value strategy) in some runs and in exit 4 "
-       "with no hint in others",
-       false},
       {"tube_straight_wall.stl", "*",
        "the deposit check rejects the plan by a few beads: iso-value and envelope 10-12 points 1-2 % outside "
        "the window (1.765 .. 2.235 mm for 1.8 .. 2.2) where the wall leans into its waist, z 7-11 mm, during "

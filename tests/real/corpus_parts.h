@@ -39,15 +39,13 @@ const std::vector<CorpusPart>& corpusParts();
 const std::vector<std::string>& corpusStrategies();
 const Expectation& expectationFor(const CorpusPart& part, const std::string& strategy);
 
-// A case today's product does not meet, with the reason: the test skips it, saying why, and
-// fails once the product meets the expectation (so the mark is removed, never left stale). A
-// case whose outcome is not repeatable (the same command ends differently from run to run) is
-// skipped whatever this run gave, with the reason and this run's outcome.
+// A case today's product does not meet, with the reason: the test still asserts it is sound,
+// prints the reason, and fails once the product meets the expectation (so the mark is removed,
+// never left stale).
 struct KnownFailure {
   std::string file;
   std::string strategy;  // "*" for every strategy
   std::string reason;
-  bool repeatable = true;
 };
 
 // The mark of a (file, strategy) case, or null if it has none.

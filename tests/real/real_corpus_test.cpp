@@ -144,8 +144,7 @@ TEST_P(RealCorpus, PlanIsSoundOrRefusedWithAHint)
   const Outcome o = judge(part, want, run, dir.path());
   const KnownFailure* known = knownFailure(part.file, strategy);
   const char* mark = o.met ? "MET" : "NOT MET";
-  if (known)
-    mark = known->repeatable ? (o.met ? "MET (marked known failure)" : "KNOWN FAILURE") : "NOT REPEATABLE";
+  if (known) mark = o.met ? "MET (marked known failure)" : "KNOWN FAILURE";
   // One line per case for the corpus report (grep REAL_CORPUS in the test log).
   std::cout << "REAL_CORPUS | " << part.file << " | " << strategy << " | exit " << run.exitCode << " | "
             << std::fixed << std::setprecision(1) << planSeconds << " s | expects " << expectName(want.expect)
@@ -154,7 +153,7 @@ TEST_P(RealCorpus, PlanIsSoundOrRefusedWithAHint)
   EXPECT_TRUE(o.sound) << part.file << " with --strategy " << strategy << ": " << o.verdict;
   if (known) {
     // A marked case still owes soundness (above); its expectation is what remains to be built.
-    if (known->repeatable && o.met)
+    if (o.met)
       ADD_FAILURE() << "now meets the expectation (" << expectName(want.expect)
                     << "): remove its known-failure mark in corpus_parts.cpp (" << known->reason << ")";
     return;

@@ -103,6 +103,32 @@ TEST(DepositCheck, RingLiftedIntoMidAirIsUnsupportedAndItsSeamAJump)
   EXPECT_NEAR(r.heightMax, 32.0, 1e-6);
 }
 
+// hMax = 2.5 mm: material is looked for at most 25 mm below a point, the substrate plane excepted
+// (always measured). With the substrate 1000 mm down, the first ring is unsupported at its true
+// distance from it, and a ring 60 mm above the last one, out of reach of the rings below, is
+// measured against the substrate too.
+TEST(DepositCheck, RingFarAboveEverythingHasNothingWithinTheSearchDepth)
+{
+  DepositCheckSettings s = window();
+  s.substrateZ = -1000.0;
+  NullProgress none;
+  const DepositCheckReport r = checkDeposits(
+      cylinderSpiral(8, [](int ring, int) { return ring >= 4 ? 60.0 : 0.0; }), nullptr, s, none);
+  EXPECT_NEAR(r.searchDepth, 25.0, 1e-12);
+  ASSERT_EQ(r.count(DepositDefect::Unsupported), size_t(2 * kPointsPerRing));
+  std::vector<const DepositFlag*> unsupported;
+  for (const DepositFlag& f : r.flags)
+    if (f.kind == DepositDefect::Unsupported) unsupported.push_back(&f);
+  EXPECT_EQ(unsupported.front()->point, 0u);
+  EXPECT_NEAR(unsupported.front()->height, 1001.5, 1e-9);
+  const DepositFlag& lifted = *unsupported[kPointsPerRing];
+  EXPECT_EQ(lifted.point, 4u * kPointsPerRing);
+  EXPECT_NEAR(lifted.height, 1069.5, 1e-9);
+  EXPECT_NE(r.summary().find("point 0 at (30.0, 0.0, 1.5) mm is 1001.50 mm above the material below it"),
+            std::string::npos)
+      << r.summary();
+}
+
 TEST(DepositCheck, PointPushedUnderThePreviousRingLiesBelowTheDeposit)
 {
   const int ring = 5, at = 180;

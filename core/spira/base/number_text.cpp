@@ -1,6 +1,8 @@
 #include "spira/base/number_text.h"
 
 #include <charconv>
+#include <iomanip>
+#include <sstream>
 
 namespace spira {
 
@@ -16,6 +18,20 @@ void appendNumber(std::string& out, long long x)
   char buf[24];
   const auto r = std::to_chars(buf, buf + sizeof buf, x);
   out.append(buf, r.ptr);
+}
+
+std::string fixedText(double x, int digits)
+{
+  std::ostringstream o;
+  o << std::fixed << std::setprecision(digits) << x;
+  return o.str();
+}
+
+std::string significantText(double x, int digits)
+{
+  std::ostringstream o;
+  o << std::setprecision(digits) << x;
+  return o.str();
 }
 
 }  // namespace spira

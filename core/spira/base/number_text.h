@@ -9,4 +9,9 @@ namespace spira {
 void appendNumber(std::string& out, double x);
 void appendNumber(std::string& out, long long x);
 
+// Text for messages: `digits` after the decimal point ("2.45"), or `digits` significant ones
+// ("1.55", "120.5"), as a reader of a message wants them rather than bit-exact.
+std::string fixedText(double x, int digits);
+std::string significantText(double x, int digits);
+
 }  // namespace spira

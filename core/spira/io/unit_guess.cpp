@@ -1,8 +1,8 @@
 #include "spira/io/unit_guess.h"
 
 #include <algorithm>
-#include <iomanip>
-#include <sstream>
+
+#include "spira/base/number_text.h"
 
 namespace spira {
 namespace {
@@ -16,9 +16,7 @@ constexpr double kLargestPartMm = 20000.0;
 
 std::string mm(double v)
 {
-  std::ostringstream o;
-  o << std::fixed << std::setprecision(v < 10.0 ? 2 : 0) << v;
-  return o.str();
+  return fixedText(v, v < 10.0 ? 2 : 0);
 }
 
 }  // namespace

@@ -1,23 +1,21 @@
 #include "spira/planning/branch_refusal.h"
 
 #include <algorithm>
-#include <iomanip>
 #include <sstream>
 
 #include "spira/base/error.h"
+#include "spira/base/number_text.h"
 
 namespace spira {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
-std::string mm(double v)
+std::string mmText(double v)
 {
-  std::ostringstream o;
-  o << std::fixed << std::setprecision(1) << v << " mm";
-  return o.str();
+  return fixedText(v, 1) + " mm";
 }
+
+constexpr double kPi = 3.14159265358979323846;
 
 }  // namespace
 
@@ -28,7 +26,7 @@ void refuseUnbranchedPart(const std::vector<BoundaryLoop>& loops, double minPeri
   int count = 0;
   for (size_t i = 0; i < loops.size(); ++i) {
     if (loops[i].length >= minPerimeter) continue;
-    narrow << (count ? ", " : "") << "free edge " << i + 1 << " is " << mm(loops[i].length) << " around";
+    narrow << (count ? ", " : "") << "free edge " << i + 1 << " is " << mmText(loops[i].length) << " around";
     shortest = count ? std::min(shortest, loops[i].length) : loops[i].length;
     ++count;
   }
@@ -37,9 +35,9 @@ void refuseUnbranchedPart(const std::vector<BoundaryLoop>& loops, double minPeri
     std::ostringstream what, hint;
     what << "the part cannot be planned: it has " << edges
          << " but its walls do not part into branches a bead can lay: " << narrow.str()
-         << ", shorter than one bead ring (" << mm(minPerimeter) << ", pi x the " << mm(beadWidth)
+         << ", shorter than one bead ring (" << mmText(minPerimeter) << ", pi x the " << mmText(beadWidth)
          << " bead width), so the branches there are narrower than the bead";
-    hint << "use a bead narrower than " << mm(shortest / kPi)
+    hint << "use a bead narrower than " << mmText(shortest / kPi)
          << " (--bead-width) for these edges, and narrower still where the part narrows between them, or "
             "scale the part up in the CAD tool (check --unit if it should be larger): Spira lays a branch "
             "only where its wall is at least one bead ring around";
@@ -48,7 +46,7 @@ void refuseUnbranchedPart(const std::vector<BoundaryLoop>& loops, double minPeri
   throw InputError("the part cannot be planned: it has " + edges +
                        " but its walls do not part into branches: at least one free edge is a hole in a "
                        "wall, or a branch narrows below one bead ring (" +
-                       mm(minPerimeter) + ") on its way to its free edge",
+                       mmText(minPerimeter) + ") on its way to its free edge",
                    "close the hole(s) in the CAD or mesh tool ('spira-cli info' lists the loops and their "
                    "heights), or use a narrower bead (--bead-width) if a branch is that slender: Spira "
                    "plans walls with one free edge on the substrate, at most one on top, and one more per "

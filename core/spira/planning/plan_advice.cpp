@@ -2,11 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <iomanip>
 #include <optional>
-#include <sstream>
 
 #include "spira/base/error.h"
+#include "spira/base/number_text.h"
 #include "spira/planning/plan_schemas.h"
 
 namespace spira {
@@ -15,13 +14,6 @@ namespace {
 struct Window {
   double hMin, hMax;
 };
-
-std::string text(double v)
-{
-  std::ostringstream o;
-  o << std::setprecision(4) << v;
-  return o.str();
-}
 
 std::string shortId(const std::string& id)
 {
@@ -49,8 +41,8 @@ std::optional<Window> measuredWindow(const PlanOutput& plan, const SpiralSetting
   w.hMax = std::ceil(w.hMax / 0.05) * 0.05;
   if (w.hMin <= 0.0 || w.hMin >= s.h || w.hMax <= s.h) return std::nullopt;
   if (w.hMin < (1.0 - kWidestWindow) * s.h || w.hMax > (1.0 + kWidestWindow) * s.h) {
-    tooWide = "the beads as planned would need a window of " + text(w.hMin) + " .. " + text(w.hMax) +
-              " mm, wider than h +/- 50 %, which no process lays steadily";
+    tooWide = "the beads as planned would need a window of " + significantText(w.hMin, 4) + " .. " +
+              significantText(w.hMax, 4) + " mm, wider than h +/- 50 %, which no process lays steadily";
     return std::nullopt;
   }
   return w;
@@ -63,17 +55,25 @@ class Trial {
   {
   }
   bool exhausted() const { return left_ <= 0; }
+  int planned() const { return planned_; }
 
-  // Plans with `strategy` and, when set, `window`; true when feasible. Records the failure.
-  bool plans(const std::string& strategy, const std::optional<Window>& window, const std::string& label)
+  // The request with `strategy` and, when set, `window`.
+  PlanRequest with(const std::string& strategy, const std::optional<Window>& window) const
   {
-    --left_;
     PlanRequest r = request_;
     r.decomposerId = strategy;
     if (window) {
       r.params["spiral"].set("h_min", window->hMin);
       r.params["spiral"].set("h_max", window->hMax);
     }
+    return r;
+  }
+
+  // Plans `r`; true when feasible. Records the failure under `label`.
+  bool plans(const PlanRequest& r, const std::string& label)
+  {
+    --left_;
+    ++planned_;
     try {
       SubProgress p(progress_, 0.0, 1.0, "checking: " + label);
       const PlanOutput plan = planPart(registry_, r, p);
@@ -91,6 +91,7 @@ class Trial {
   const PlanRequest& request_;
   Progress& progress_;
   int left_;
+  int planned_ = 0;
 };
 
 }  // namespace
@@ -116,8 +117,9 @@ PlanAdvice adviseChange(const PluginRegistry& registry, const PlanRequest& reque
   Trial trial(registry, request, progress, maxPlans);
   if (!tooWide.empty()) trial.tried.push_back(tooWide);
   auto windowText = [](const Window& w) {
-    return std::make_pair("widen the process window to " + text(w.hMin) + " .. " + text(w.hMax) + " mm",
-                          "--h-min " + text(w.hMin) + " --h-max " + text(w.hMax));
+    return std::make_pair("widen the process window to " + significantText(w.hMin, 4) + " .. " +
+                              significantText(w.hMax, 4) + " mm",
+                          "--h-min " + significantText(w.hMin, 4) + " --h-max " + significantText(w.hMax, 4));
   };
   auto done = [&](std::string change, std::string flags) {
     advice.found = true;
@@ -129,7 +131,7 @@ PlanAdvice adviseChange(const PluginRegistry& registry, const PlanRequest& reque
 
   if (window) {
     const auto [change, flags] = windowText(*window);
-    if (trial.plans(request.decomposerId, window, change)) return done(change, flags);
+    if (trial.plans(trial.with(request.decomposerId, window), change)) return done(change, flags);
   }
   std::vector<std::string> others;
   for (const Plugin* p : registry.ofKind(PluginKind::Decomposer))
@@ -137,14 +139,15 @@ PlanAdvice adviseChange(const PluginRegistry& registry, const PlanRequest& reque
   for (const std::string& id : others) {
     if (trial.exhausted()) break;
     const std::string change = "use the " + shortId(id) + " strategy";
-    if (trial.plans(id, std::nullopt, change)) return done(change, "--strategy " + shortId(id));
+    if (trial.plans(trial.with(id, std::nullopt), change)) return done(change, "--strategy " + shortId(id));
   }
   if (window)
     for (const std::string& id : others) {
       if (trial.exhausted()) break;
       const auto [widen, flags] = windowText(*window);
       const std::string change = "use the " + shortId(id) + " strategy and " + widen;
-      if (trial.plans(id, window, change)) return done(change, "--strategy " + shortId(id) + " " + flags);
+      if (trial.plans(trial.with(id, window), change))
+        return done(change, "--strategy " + shortId(id) + " " + flags);
     }
   advice.tried = trial.tried;
   return advice;
@@ -167,43 +170,36 @@ PlanAdvice adviseSmallerDeposit(const PluginRegistry& registry, const PlanReques
   const double length = refusal.length(), rampsPerH = (refusal.needed() - s.hMin) / s.h;
   const double low = s.hMin / s.h, high = s.hMax / s.h;
   const bool explicitWindow = given.has("h_min") && given.getDouble("h_min") > 0.0;
-  int plans = 0;
+  Trial trial(registry, request, progress, kMaxPlans);
   for (double h = std::floor(length / (rampsPerH + low) / 0.05) * 0.05;
-       h >= kThinnestAdvisedDeposit - 1e-9 && plans < kMaxPlans; h -= 0.05) {
+       h >= kThinnestAdvisedDeposit - 1e-9 && !trial.exhausted(); h -= 0.05) {
     h = std::round(h / 0.05) * 0.05;
     const double rest = length - rampsPerH * h;
     if (rest < 0.99 * low * h || std::ceil(rest / (high * h)) * low * h > 1.01 * rest) continue;
-    ++plans;
     PlanRequest r = request;
     r.params["spiral"].set("h", h);
-    std::string flags = "--h " + text(h);
+    std::string flags = "--h " + significantText(h, 4);
     if (explicitWindow) {
       const double f = h / s.h;
       const double lo = std::floor(s.hMin * f / 0.01) * 0.01, hi = std::ceil(s.hMax * f / 0.01) * 0.01;
       r.params["spiral"].set("h_min", lo);
       r.params["spiral"].set("h_max", hi);
-      flags += " --h-min " + text(lo) + " --h-max " + text(hi);
+      flags += " --h-min " + significantText(lo, 4) + " --h-max " + significantText(hi, 4);
     }
     const std::string change =
-        "lay thinner deposits, h = " + text(h) + " mm, so the start-up and closing ramps fit";
-    try {
-      SubProgress p(progress, 0.0, 1.0, "checking: " + change);
-      const PlanOutput plan = planPart(registry, r, p);
-      if (plan.feasible()) {
-        advice.found = true;
-        advice.change = change;
-        advice.flags = flags;
-        return advice;
-      }
-      advice.tried.push_back(change + ": " + plan.deposits.summary());
-    } catch (const Error& e) {
-      advice.tried.push_back(change + ": " + e.what());
+        "lay thinner deposits, h = " + significantText(h, 4) + " mm, so the start-up and closing ramps fit";
+    if (trial.plans(r, change)) {
+      advice.found = true;
+      advice.change = change;
+      advice.flags = flags;
+      return advice;
     }
   }
-  if (plans == 0)
+  advice.tried = trial.tried;
+  if (trial.planned() == 0)
     advice.tried.push_back(
         "the part's walls are too short for the start-up and closing ramps of any deposit of at least " +
-        text(kThinnestAdvisedDeposit) + " mm, the thinnest a process lays steadily");
+        significantText(kThinnestAdvisedDeposit, 4) + " mm, the thinnest a process lays steadily");
   return advice;
 }
 

@@ -1,8 +1,8 @@
 #include "spira/planning/plan_schemas.h"
 
-#include <sstream>
 
 #include "spira/base/error.h"
+#include "spira/base/number_text.h"
 #include "spira/path/calibration_table.h"
 
 namespace spira {
@@ -22,11 +22,9 @@ ParamDef choice(std::string key, std::string def, std::vector<std::string> choic
                   std::move(tooltip), std::move(category), std::move(choices)};
 }
 
-std::string mm(double v)
+std::string mmText(double v)
 {
-  std::ostringstream s;
-  s << v << " mm";
-  return s.str();
+  return significantText(v, 6) + " mm";
 }
 
 }  // namespace
@@ -142,11 +140,12 @@ SpiralSettings spiralSettingsFrom(const ParamSet& given)
   s.hMax = v.getDouble("h_max") > 0.0 ? v.getDouble("h_max") : s.h * (1.0 + window);
   if (s.hMin >= s.hMax)
     throw InputError(
-        "the process window is empty: h_min = " + mm(s.hMin) + " is not below h_max = " + mm(s.hMax),
+        "the process window is empty: h_min = " + mmText(s.hMin) + " is not below h_max = " + mmText(s.hMax),
         "set --h-min below --h-max");
   if (s.h < s.hMin || s.h > s.hMax)
-    throw InputError("h = " + mm(s.h) + " lies outside the window [" + mm(s.hMin) + ", " + mm(s.hMax) + "]",
-                     "choose h between h_min and h_max, or widen the window");
+    throw InputError(
+        "h = " + mmText(s.h) + " lies outside the window [" + mmText(s.hMin) + ", " + mmText(s.hMax) + "]",
+        "choose h between h_min and h_max, or widen the window");
   s.layerMode = v.getString("layer_mode") == "floor" ? LayerMode::Floor : LayerMode::Centered;
   s.termination = v.getString("termination") == "absorb" ? Termination::Absorb : Termination::Ramps;
   s.heightTolerance = v.internal(schema, "height_tolerance");

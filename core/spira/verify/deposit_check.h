@@ -27,7 +27,9 @@ const char* depositDefectName(DepositDefect kind);  // "below_deposit", "thin", 
 struct DepositFlag {
   size_t point = 0;  // trajectory index
   DepositDefect kind = DepositDefect::Unsupported;
-  double height = 0.0;  // measured height (jump: segment length); unsupported with nothing below: inf
+  // Measured height (jump: segment length); unsupported with nothing within the report's
+  // searchDepth below: inf.
+  double height = 0.0;
   Vec3 position = Vec3::Zero();
 };
 
@@ -41,6 +43,7 @@ struct DepositCheckReport {
   size_t counts[5] = {0, 0, 0, 0, 0};  // per DepositDefect
   std::vector<DepositFlag> flags;      // in trajectory order
   double jumpLength = 0.0;             // the largest step with the arc on still accepted, mm (first run)
+  double searchDepth = 0.0;            // how far below a point material is looked for, mm
 
   bool coverageChecked = false;
   double surfaceArea = 0.0, uncoveredArea = 0.0;  // mm^2
