@@ -89,6 +89,24 @@ RingMesh domeMesh(double r, double edge)
   return stackRings(rings, edge, true, r);
 }
 
+RingMesh jitteredDome(double r, double edge, double jitter, unsigned seed)
+{
+  RingMesh dome = domeMesh(r, edge);
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  std::vector<char> keep(dome.mesh.vertices.size(), 0);
+  for (int v : dome.lower) keep[v] = 1;
+  keep[dome.pole] = 1;
+  for (size_t v = 0; v < dome.mesh.vertices.size(); ++v) {
+    if (keep[v]) continue;
+    Vec3& p = dome.mesh.vertices[v];
+    p += jitter * edge * Vec3(unit(rng), unit(rng), unit(rng));
+    p.z() = std::max(p.z(), 0.1 * edge);
+    p = r * p.normalized();
+  }
+  return dome;
+}
+
 TriangleMesh jitteredPlane(double half, double edge, double jitter, unsigned seed)
 {
   const double rowStep = edge * std::sqrt(3.0) / 2.0;

@@ -1,5 +1,7 @@
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <vector>
 
 #include "spira/mesh/triangle_mesh.h"
@@ -27,5 +29,32 @@ RingMesh domeMesh(double r, double edge);
 // `edge` whose interior vertices are moved by up to `jitter` * edge in random directions (fixed
 // seed). No symmetry for a method to lean on.
 TriangleMesh jitteredPlane(double half, double edge, double jitter, unsigned seed);
+// domeMesh(r, edge) with every vertex but the rim and the pole moved by up to `jitter` * edge in
+// each coordinate and put back on the sphere (fixed seed): irregular triangles on the same surface.
+RingMesh jitteredDome(double r, double edge, double jitter, unsigned seed);
+
+struct ErrorStats {
+  double mean = 0.0, max = 0.0;
+  int count = 0;
+};
+
+// Relative error against an exact distance on the vertices farther than `minDistance` from the
+// sources (the heat method smooths the distance within a few edges of its sources).
+template <typename Exact>
+ErrorStats relativeError(const TriangleMesh& mesh, const std::vector<double>& phi, double minDistance,
+                         Exact exact)
+{
+  ErrorStats s;
+  for (size_t v = 0; v < mesh.vertices.size(); ++v) {
+    const double d = exact(mesh.vertices[v]);
+    if (d <= minDistance) continue;
+    const double e = std::abs(phi[v] - d) / d;
+    s.mean += e;
+    s.max = std::max(s.max, e);
+    ++s.count;
+  }
+  if (s.count) s.mean /= s.count;
+  return s;
+}
 
 }  // namespace spira::test

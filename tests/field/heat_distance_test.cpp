@@ -14,29 +14,8 @@ namespace {
 
 using test::RingMesh;
 
-struct ErrorStats {
-  double mean = 0.0, max = 0.0;
-  int count = 0;
-};
-
-// Relative error against an exact distance on the vertices farther than `minDistance` from the
-// sources (the heat method smooths the distance within a few edges of its sources).
-template <typename Exact>
-ErrorStats relativeError(const TriangleMesh& mesh, const std::vector<double>& phi, double minDistance,
-                         Exact exact)
-{
-  ErrorStats s;
-  for (size_t v = 0; v < mesh.vertices.size(); ++v) {
-    const double d = exact(mesh.vertices[v]);
-    if (d <= minDistance) continue;
-    const double e = std::abs(phi[v] - d) / d;
-    s.mean += e;
-    s.max = std::max(s.max, e);
-    ++s.count;
-  }
-  if (s.count) s.mean /= s.count;
-  return s;
-}
+using test::ErrorStats;
+using test::relativeError;
 
 TEST(HeatDistance, TubeDistanceFromBottomEdgeIsHeight)
 {
@@ -176,6 +155,9 @@ TEST(HeatDistance, RejectsBadSources)
   HeatDistanceOptions bad;
   bad.timeScale = 0.0;
   EXPECT_THROW(HeatDistanceSolver(tube.mesh, bad), InputError);
+  HeatDistanceOptions negative;
+  negative.refinementSteps = -1;
+  EXPECT_THROW(HeatDistanceSolver(tube.mesh, negative), InputError);
 }
 
 class CancelAfter final : public Progress {

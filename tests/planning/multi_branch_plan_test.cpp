@@ -158,8 +158,8 @@ TEST(MultiBranchPlan, YTubeRowsStayInTheWindow)
   EXPECT_TRUE(p.paths[0].trunk);
   EXPECT_EQ(rowsOutsideWindow(p, 0), 0u);
   EXPECT_TRUE(p.paths[0].spiral.violations.empty());
-  EXPECT_LE(rowsOutsideWindow(p, 1), 110u);
-  EXPECT_LE(rowsOutsideWindow(p, 2), 60u);
+  EXPECT_LE(rowsOutsideWindow(p, 1), 75u);
+  EXPECT_LE(rowsOutsideWindow(p, 2), 75u);
 }
 
 TEST(MultiBranchPlan, ReportAndCsvCarryTheSubPaths)

@@ -57,13 +57,17 @@ struct HeatDistanceSolver::Impl {
 
   void build(const TriangleMesh& mesh, Progress& progress);
   std::vector<double> heatSolve(const std::vector<int>& sources);
-  std::vector<double> divergence(const std::vector<double>& u);
+  std::vector<Vec3> unitDescent(const std::vector<double>& u, int& flatFaces) const;
+  std::vector<double> divergence(const std::vector<Vec3>& x) const;
 };
 
 void HeatDistanceSolver::Impl::build(const TriangleMesh& mesh, Progress& progress)
 {
   if (!(options.timeScale > 0.0) || !std::isfinite(options.timeScale))
     throw InputError("heat method time scale must be a positive number", "use 1 (t = h^2)");
+  if (options.refinementSteps < 0)
+    throw InputError("heat method refinement steps must not be negative",
+                     "use 1 (0 is the plain heat method)");
   using Clock = std::chrono::steady_clock;
   const auto seconds = [](Clock::time_point a) {
     return std::chrono::duration<double>(Clock::now() - a).count();
@@ -159,14 +163,13 @@ std::vector<double> HeatDistanceSolver::Impl::heatSolve(const std::vector<int>& 
   return uN;
 }
 
-// b_i = sum over the faces f around i of A_f grad(phi_i) . X_f, where A_f grad(phi_i) =
-// (N_f x e_i) / 2 with e_i the edge opposite i, counter-clockwise. This is minus the integrated
-// divergence of Appendix A.5, the right-hand side of (-L_C) phi = -div X.
-std::vector<double> HeatDistanceSolver::Impl::divergence(const std::vector<double>& u)
+// X_f = -grad u / |grad u| per face; faces where grad u vanishes or is not finite get X = 0
+// and are counted in `flatFaces`.
+std::vector<Vec3> HeatDistanceSolver::Impl::unitDescent(const std::vector<double>& u, int& flatFaces) const
 {
   const int faceCount = int(faces.size());
   std::vector<Vec3> x(faceCount, Vec3::Zero());
-  std::vector<int> dark(faceCount, 0);
+  std::vector<int> flat(faceCount, 0);
   tbb::parallel_for(tbb::blocked_range<int>(0, faceCount, 8192), [&](const tbb::blocked_range<int>& r) {
     for (int f = r.begin(); f < r.end(); ++f) {
       const Face& t = faces[f];
@@ -179,13 +182,19 @@ std::vector<double> HeatDistanceSolver::Impl::divergence(const std::vector<doubl
       if (scale > 0.0 && std::isfinite(scale))
         x[f] = -(g / scale).normalized();
       else
-        dark[f] = 1;
+        flat[f] = 1;
     }
   });
-  int darkCount = 0;
-  for (int d : dark) darkCount += d;
-  stats.facesWithoutHeat = darkCount;
+  flatFaces = 0;
+  for (int d : flat) flatFaces += d;
+  return x;
+}
 
+// b_i = sum over the faces f around i of A_f grad(phi_i) . X_f, where A_f grad(phi_i) =
+// (N_f x e_i) / 2 with e_i the edge opposite i, counter-clockwise. This is minus the integrated
+// divergence of Appendix A.5, the right-hand side of (-L_C) phi = -div X.
+std::vector<double> HeatDistanceSolver::Impl::divergence(const std::vector<Vec3>& x) const
+{
   const int n = int(points.size());
   std::vector<double> b(n, 0.0);
   tbb::parallel_for(tbb::blocked_range<int>(0, n, 4096), [&](const tbb::blocked_range<int>& r) {
@@ -263,22 +272,39 @@ std::vector<double> HeatDistanceSolver::compute(const std::vector<int>& sources,
   const std::vector<double> u = m.heatSolve(sources);
   progress.checkCancel();
   progress.report(0.4, "field: divergence");
-  const std::vector<double> b = m.divergence(u);
+  std::vector<double> phi = m.poissonFactor->solve(m.divergence(m.unitDescent(u, m.stats.facesWithoutHeat)));
   progress.checkCancel();
-  progress.report(0.6, "field: Poisson");
-  std::vector<double> phi = m.poissonFactor->solve(b);
-  progress.checkCancel();
+  // Each refinement takes its directions from phi instead of u: the heat step's directions
+  // scatter on irregular triangles, and since only their mean flux reaches phi, the scatter
+  // shortens every distance (about 0.2 % at a jitter of 0.2 edges). phi is smooth, so its
+  // directions scatter far less; faces where it is flat keep no direction, as for u.
+  for (int k = 0; k < m.options.refinementSteps; ++k) {
+    progress.report(0.6 + 0.3 * k / m.options.refinementSteps, "field: refining");
+    for (double& value : phi) value = -value;
+    int flat = 0;
+    phi = m.poissonFactor->solve(m.divergence(m.unitDescent(phi, flat)));
+    progress.checkCancel();
+  }
 
-  // Each component is shifted so that its nearest source is at 0; no source: unreachable.
+  // The sources are all at distance 0, but phi is known only up to a constant per component:
+  // the least-squares constant, the mean over the component's sources, is used. The smallest
+  // value would follow the single worst source vertex (a seam of the base loop) and lift the
+  // whole field by that vertex's error. Sources without a usable face hold no value of phi.
+  // A component with no source is unreachable.
   const double inf = std::numeric_limits<double>::infinity();
-  std::vector<double> shift(m.adjacency.componentCount, inf);
+  std::vector<double> shift(m.adjacency.componentCount, 0.0);
+  std::vector<int> count(m.adjacency.componentCount, 0);
+  std::vector<char> reached(m.adjacency.componentCount, 0);
   for (int s : sources) {
     const int c = m.adjacency.component[s];
-    shift[c] = std::min(shift[c], phi[s]);
+    reached[c] = 1;
+    if (m.isolated[s]) continue;
+    shift[c] += phi[s];
+    ++count[c];
   }
   for (int v = 0; v < n; ++v) {
-    const double s = shift[m.adjacency.component[v]];
-    phi[v] = std::isfinite(s) ? phi[v] - s : inf;
+    const int c = m.adjacency.component[v];
+    phi[v] = !reached[c] ? inf : count[c] > 0 ? phi[v] - shift[c] / count[c] : phi[v];
   }
   m.stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   progress.report(1.0, "field: distance");

@@ -15,6 +15,10 @@ struct HeatDistanceOptions {
   // solution (u = 0 there), which makes the distance behave as if the boundary were not there
   // (Crane et al. 2013, thesis section 2.3). False keeps the Neumann solution alone, as CGAL does.
   bool averageBoundaryConditions = true;
+  // Poisson solves after the first, each with the unit directions of the previous distance
+  // instead of those of the heat flow. Each costs one pass over the faces and one solve with
+  // the factor already computed; 0 is the plain heat method.
+  int refinementSteps = 1;
 };
 
 // What the last compute() did, for reports and benchmarks.
@@ -35,8 +39,9 @@ struct HeatDistanceSetupStats {
 
 // Geodesic distance by the heat method (Crane, Weischedel & Wardetzky 2013; thesis section 2.3
 // and Appendix A): one heat step (A - t L_C) u = delta_sources, the unit field X = -grad u / |grad u|
-// per face, its integrated divergence b, and the Poisson equation L_C phi = b, shifted so that the
-// smallest value on the sources is 0.
+// per face, its integrated divergence b, and the Poisson equation L_C phi = b; then
+// `refinementSteps` more Poisson solves with X = grad phi / |grad phi|, and a shift so that the
+// mean of phi over the sources is 0.
 //
 // The constructor does everything that depends on the mesh only: cotan operators, a
 // fill-reducing order, one symbolic analysis and the Cholesky factorisations of the heat and

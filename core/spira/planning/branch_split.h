@@ -43,8 +43,11 @@ struct BranchSplitOptions {
   double nominalHeight = 2.0;  // h, mm
   double thinnestDeposit = 1.8;  // h_min, mm
   // The cuts follow the distance smoothed by one implicit heat step of time smoothing * h^2
-  // (field_smoothing.h); 0 cuts the raw distance.
-  double smoothing = 16.0;
+  // (field_smoothing.h); 0 cuts the raw distance. The step only has to remove the distance's
+  // face-to-face wobble; a longer one also rounds the crease the distance has at the crotch, so
+  // the cut leaves the distance's level line there and the gap the branches bridge is no longer
+  // the junction gap.
+  double smoothing = 8.0;
   int maxDepth = 4;  // pieces deeper than this many splits are left whole
 };
 
