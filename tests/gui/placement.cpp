@@ -19,6 +19,7 @@
 #include "spira/document/kinematics_result.h"
 #include "spira/io/mesh_writers.h"
 #include "spira/mesh/mesh_primitives.h"
+#include "spira/mesh/mesh_report.h"
 #include "spira/ui/cell_workspace.h"
 #include "spira/ui/comfort_features.h"
 #include "spira/ui/main_window.h"
@@ -190,6 +191,53 @@ TEST(Placement, ThePlanFollowsThePlacedPart)
   ASSERT_EQ(doc.results().spiral->size(), planned->size());
   for (size_t i = 0; i < planned->size(); i += 97)
     EXPECT_NEAR((doc.results().spiral->points[i].position - planned->points[i].position).norm(), 0.0, 1e-9);
+}
+
+// A scanned tube cut at a slant (its base edge rising 8 mm across): the plan refuses it and
+// names the Level Base button; the button cuts it level and stands it on the plate in one undo
+// step, and the levelled tube plans.
+TEST(Placement, LevelBaseCutsASlantBaseLevelAndThePartThenPlans)
+{
+  TempDir dir;
+  Document doc;
+  MainWindow w(doc, MainWindowOptions{false, false});
+  showAndWait(w);
+  TriangleMesh tube = makeOpenCylinder(30.0, 60.0, 120, 30);
+  for (Vec3& v : tube.vertices) {
+    const double base = 4.0 * (1.0 + v.x() / 30.0);
+    v.z() = base + (60.0 - base) * v.z() / 60.0;
+  }
+  const std::filesystem::path file = dir.path() / "slant_tube.stl";
+  writeMesh(tube, file, MeshFileFormat::StlBinary);
+  ASSERT_TRUE(openAndWait(w, qpath(file)));
+  PlacementPanel* panel = placementOf(w);
+  ASSERT_NE(panel, nullptr);
+  EXPECT_TRUE(panel->levelBaseButton()->isEnabled());
+  ASSERT_TRUE(planAndWait(w));
+  EXPECT_FALSE(doc.results().spiral);
+  EXPECT_TRUE(w.lastErrorMessage().contains(QStringLiteral("is not level")))
+      << w.lastErrorMessage().toStdString();
+  EXPECT_TRUE(w.lastErrorHint().contains(QStringLiteral("Placement > Level Base")))
+      << w.lastErrorHint().toStdString();
+
+  const auto original = doc.part()->mesh;
+  const size_t steps = doc.undoStack().count();
+  ASSERT_TRUE(panel->levelBase());
+  EXPECT_EQ(doc.undoStack().count(), steps + 1);
+  EXPECT_EQ(QString::fromStdString(doc.undoStack().undoText()), QStringLiteral("Level base"));
+  TriangleMesh world = *doc.part()->mesh;
+  for (Vec3& v : world.vertices) v = doc.part()->T_world_part * v;
+  const MeshReport report = validateMesh(world);
+  ASSERT_EQ(report.boundaryLoops.size(), 2u);
+  EXPECT_NEAR(report.boundaryLoops[0].zMin, 0.0, 1e-9);
+  EXPECT_NEAR(report.boundaryLoops[0].zMax, 0.0, 1e-9);
+  EXPECT_NEAR(report.bounds.max.z(), 52.0, 1e-9);  // 8 mm off the 60 mm tube
+
+  ASSERT_TRUE(planAndWait(w));
+  ASSERT_TRUE(doc.results().spiral) << w.lastErrorMessage().toStdString();
+  saveDocScreenshot(w.captureImage(), QStringLiteral("level-base.png"));
+  doc.undo();
+  EXPECT_EQ(doc.part()->mesh, original);
 }
 
 // A part stored lying on its side but placed upright stands upright on the robot's table too:

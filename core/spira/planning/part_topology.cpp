@@ -121,7 +121,8 @@ void requireLevelBase(const PartTopology& topology, double substrateZ, double to
        << " mm, where the first revolution can bridge at most " << tolerance
        << " mm (half the thinnest bead): it would start in mid-air";
   hint << std::fixed << std::setprecision(2) << "cut the part level at z = " << topology.lower.zMax
-       << " mm and stand it on the substrate (spira-cli plan --level-base does both; the part loses "
+       << " mm and stand it on the substrate (spira-cli plan --level-base or Placement > Level Base in Spira "
+          "do both; the part loses "
        << topology.lower.zMax - topology.lower.zMin
        << " mm at its base), or give a part whose base edge lies in "
        << "one plane";

@@ -66,6 +66,8 @@ ComfortFeatures::ComfortFeatures(MainWindow& window, bool userSession, bool inte
   placement_ = new PlacementPanel(doc, &window);
   window.addDockWidget(Qt::LeftDockWidgetArea, placement_);
   window.tabifyDockWidget(window.displayPanel(), placement_);
+  connect(placement_, &PlacementPanel::failed, this,
+          [this](const QString& message, const QString& hint) { window_.logPanel()->error(message, hint); });
   if (auto* tree = window.findChild<QDockWidget*>(QStringLiteral("documentDock"))) {
     tree->raise();
     // A dock added to the column resets its width: give back the width the window chose.

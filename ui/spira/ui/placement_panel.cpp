@@ -15,8 +15,11 @@
 #include <QScrollArea>
 #include <QVBoxLayout>
 
+#include "spira/base/error.h"
 #include "spira/mesh/mesh_report.h"
 #include "spira/mesh/triangle_mesh.h"
+#include "spira/planning/level_base.h"
+#include "spira/planning/part_topology.h"
 
 namespace spira::ui {
 
@@ -125,6 +128,13 @@ PlacementPanel::PlacementPanel(Document& doc, QWidget* parent)
   drop_->setObjectName(QStringLiteral("dropToSubstrate"));
   drop_->setToolTip(tr("Move the part along Z until its lowest point touches the substrate plate"));
   connect(drop_, &QPushButton::clicked, this, [this] { dropToSubstrate(); });
+  level_ = new QPushButton(tr("Level Base"), body);
+  level_->setSizePolicy(QSizePolicy::Maximum, QSizePolicy::Fixed);
+  level_->setObjectName(QStringLiteral("levelBase"));
+  level_->setToolTip(
+      tr("Cut the part level through the highest point of its base edge (a scan cut at a slant), then drop "
+         "it onto the substrate plate"));
+  connect(level_, &QPushButton::clicked, this, [this] { levelBase(); });
   reset_ = new QPushButton(tr("Reset"), body);
   reset_->setToolTip(tr("Put the part back where it was imported: no move, no rotation"));
   connect(reset_, &QPushButton::clicked, this, [this] {
@@ -147,6 +157,7 @@ PlacementPanel::PlacementPanel(Document& doc, QWidget* parent)
       doc_.setLowerBoundaryOverride(loop, tr("Choose lower boundary").toStdString());
   });
   baseLayout->addWidget(lower_);
+  baseLayout->addWidget(level_);
   layout->addWidget(baseBox);
   note_ = new QLabel(body);
   note_->setWordWrap(true);
@@ -189,6 +200,7 @@ void PlacementPanel::refresh()
   for (QDoubleSpinBox* f : fields_) f->setEnabled(has);
   const bool plane = doc_.substrate()->kind == Substrate::Kind::Plane;
   drop_->setEnabled(has && plane);
+  level_->setEnabled(has && plane);
   reset_->setEnabled(has);
   lower_->setEnabled(has);
   refreshLoops();
@@ -248,6 +260,33 @@ bool PlacementPanel::dropToSubstrate()
   if (!part || !part->mesh || doc_.substrate()->kind != Substrate::Kind::Plane) return false;
   const Transform T = droppedOnPlane(*part->mesh, part->T_world_part, doc_.substrate()->planeZ);
   doc_.setPartPlacement(T, tr("Drop part to substrate").toStdString());
+  return true;
+}
+
+bool PlacementPanel::levelBase()
+{
+  const auto& part = doc_.part();
+  if (!part || !part->mesh || doc_.substrate()->kind != Substrate::Kind::Plane) return false;
+  // The base is levelled in the world, where the substrate is, and the part keeps its frame.
+  const Transform& T = part->T_world_part;
+  TriangleMesh world = *part->mesh;
+  for (Vec3& v : world.vertices) v = T * v;
+  const double planeZ = doc_.substrate()->planeZ;
+  try {
+    const PartTopology topology =
+        findPartTopology(validateMesh(world), world, planeZ, part->lowerBoundaryOverride, true);
+    LevelledBase levelled = spira::levelBase(world, topology.lower);
+    const Transform back = T.inverse();
+    for (Vec3& v : levelled.mesh.vertices) v = back * v;
+    Part p = *part;
+    p.mesh = std::make_shared<const TriangleMesh>(std::move(levelled.mesh));
+    p.lowerBoundaryOverride = Part::kAutomaticLowerBoundary;
+    p.T_world_part = droppedOnPlane(*p.mesh, T, planeZ);
+    doc_.setPart(std::move(p), tr("Level base").toStdString());
+  } catch (const Error& e) {
+    emit failed(QString::fromStdString(e.what()), QString::fromStdString(e.hint()));
+    return false;
+  }
   return true;
 }
 

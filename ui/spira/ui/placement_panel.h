@@ -47,6 +47,7 @@ class PlacementPanel : public QDockWidget {
   // x, y, z translation (mm) then rotation about x, y, z (deg).
   QDoubleSpinBox* field(int index) const { return fields_[static_cast<size_t>(index)]; }
   QPushButton* dropButton() const { return drop_; }
+  QPushButton* levelBaseButton() const { return level_; }
   QPushButton* resetButton() const { return reset_; }
   // Item 0 is "Automatic (lowest)", item i + 1 the part's boundary loop i.
   QComboBox* lowerBoundaryCombo() const { return lower_; }
@@ -54,6 +55,13 @@ class PlacementPanel : public QDockWidget {
   // Moves the part down (or up) onto the substrate plane; false when there is no part or the
   // substrate is not a plane.
   bool dropToSubstrate();
+  // Cuts the part level through the highest point of its base edge (a scan cut at a slant, see
+  // level_base.h) and drops it onto the substrate plane, one undo step; false (with failed()
+  // emitted when the cut itself fails) when there is no part or the substrate is not a plane.
+  bool levelBase();
+
+ signals:
+  void failed(const QString& message, const QString& hint);
 
  private:
   void onDocumentChanged(const ChangeSet& changes);
@@ -65,6 +73,7 @@ class PlacementPanel : public QDockWidget {
   Document::SubscriptionId subscription_ = 0;
   std::array<QDoubleSpinBox*, 6> fields_{};
   QPushButton* drop_ = nullptr;
+  QPushButton* level_ = nullptr;
   QPushButton* reset_ = nullptr;
   QComboBox* lower_ = nullptr;
   QLabel* note_ = nullptr;
