@@ -11,6 +11,8 @@
 #include "base_ring.h"
 #include "coverage.h"
 #include "generatrix_solver.h"
+#include "length_spread.h"
+#include "merged_neighbours.h"
 #include "spira/base/error.h"
 #include "spira/field/heat_distance.h"
 #include "surface_locator.h"
@@ -82,6 +84,43 @@ GeneratrixLine lineFromPath(const GeodesicMesh& gm, const SolvedGeneratrix& s, c
   return line;
 }
 
+std::string where(const Vec3& p)
+{
+  std::ostringstream s;
+  s.setf(std::ios::fixed);
+  s.precision(1);
+  s << "(" << p.x() << ", " << p.y() << ", " << p.z() << ")";
+  return s.str();
+}
+
+// Two generatrices closer than 1 % of a bead, or of the spacing they started at, lie on one
+// track; over more than a bead width of it the spiral would lay two revolutions' points on it.
+void refuseMergedNeighbours(const std::vector<GeneratrixLine>& lines, const GeodesicOptions& options,
+                            const std::optional<Vec3>& closure)
+{
+  if (!(options.beadWidth > 0.0) || lines.size() < 2) return;
+  double baseSpacing = 0.0;
+  for (size_t i = 0; i < lines.size(); ++i)
+    baseSpacing += (lines[(i + 1) % lines.size()].points.front() - lines[i].points.front()).norm();
+  baseSpacing /= double(lines.size());
+  const double gap = 0.01 * std::min(options.beadWidth, baseSpacing);
+  const MergedNeighbours m = findMergedNeighbours(lines, gap, options.beadWidth, closure, options.beadWidth);
+  if (m.pairs == 0) return;
+  std::ostringstream what;
+  what << "the geodesic generatrices run together: " << m.pairs << " of " << lines.size()
+       << " neighbouring pairs come within " << num(gap, 2)
+       << " mm of each other over more than a bead width (" << num(options.beadWidth, 2)
+       << " mm); the longest, from the base points at " << where(lines[m.first].points.front()) << " and "
+       << where(lines[(m.first + 1) % lines.size()].points.front()) << ", share " << num(m.stretch, 3)
+       << " mm from " << where(m.from)
+       << " on. Shortest paths on this mesh funnel through the same vertices (the ridges and saddles of "
+          "its facets), so one spiral cannot lay its revolutions in order along them, and the surface beside "
+          "them is left uncovered (fill-in generatrices, medians of the two, cannot part them)";
+  throw InputError(what.str(),
+                   "use --strategy isovalue: its generatrices follow a field's gradient and do not run "
+                   "together");
+}
+
 }  // namespace
 
 GeodesicDecomposition decomposeByGeodesics(const TriangleMesh& mesh, const BoundaryLoop& lower,
@@ -143,6 +182,9 @@ GeodesicDecomposition decomposeByGeodesics(const TriangleMesh& mesh, const Bound
                          "the part must be one connected surface from its lower edge to its top: check the "
                          "mesh for gaps or separate pieces");
       }
+  // Eq. 3.6 from bounds on the lengths: parts the window cannot hold are refused before the
+  // exact searches, which cost by far the most.
+  requireLengthsFitWindow(boundGeneratrixLengths(gm, bases, target), bases, options.window, upper != nullptr);
   stats.guideSeconds = secondsSince(t0);
   progress.report(0.2, "geodesics");
 
@@ -173,6 +215,9 @@ GeodesicDecomposition decomposeByGeodesics(const TriangleMesh& mesh, const Bound
   stats.meanBandFaces = bandFaces / double(n);
   meanLength /= double(n);
   stats.pathSeconds = secondsSince(t0);
+  std::vector<LengthBounds> exact(n);
+  for (size_t i = 0; i < n; ++i) exact[i] = {solved[i].path.length, solved[i].path.length};
+  requireLengthsFitWindow(exact, bases, options.window, upper != nullptr);
 
   // One point count for all: the spacing asked for along the mean generatrix.
   t0 = std::chrono::steady_clock::now();
@@ -184,6 +229,7 @@ GeodesicDecomposition decomposeByGeodesics(const TriangleMesh& mesh, const Bound
     lines[i] = resampleLine(lineFromPath(gm, solved[i], bases[i]), samples);
   });
   solved.clear();
+  refuseMergedNeighbours(lines, options, upper ? std::nullopt : std::optional<Vec3>(target.closure.position));
 
   FillInContext context{gm, locator, ring, upper, std::nullopt, samples};
   if (!upper) context.closure = target.closure;
