@@ -94,7 +94,10 @@ std::string where(const Vec3& p)
 }
 
 // Two generatrices closer than 1 % of a bead, or of the spacing they started at, lie on one
-// track; over more than a bead width of it the spiral would lay two revolutions' points on it.
+// track. There each revolution steps from one to the other along the wall instead of round it, so
+// the layer's thickness across the step collapses (to zero or below wherever their lengths differ
+// at all), and the surface beside the track is left to the next neighbour. Over more than a bead
+// width that is more than the bead can bridge.
 void refuseMergedNeighbours(const std::vector<GeneratrixLine>& lines, const GeodesicOptions& options,
                             const std::optional<Vec3>& closure)
 {
@@ -113,9 +116,10 @@ void refuseMergedNeighbours(const std::vector<GeneratrixLine>& lines, const Geod
        << " mm); the longest, from the base points at " << where(lines[m.first].points.front()) << " and "
        << where(lines[(m.first + 1) % lines.size()].points.front()) << ", share " << num(m.stretch, 3)
        << " mm from " << where(m.from)
-       << " on. Shortest paths on this mesh funnel through the same vertices (the ridges and saddles of "
-          "its facets), so one spiral cannot lay its revolutions in order along them, and the surface beside "
-          "them is left uncovered (fill-in generatrices, medians of the two, cannot part them)";
+       << " on. Shortest paths on this mesh funnel through the same vertices (the saddles of a waist or "
+          "of its facets); along a shared track the spiral steps up the wall instead of round it, laying "
+          "beads under earlier ones and in mid-air, and fill-in generatrices (medians of the two) cannot "
+          "part them";
   throw InputError(what.str(),
                    "use --strategy isovalue: its generatrices follow a field's gradient and do not run "
                    "together");

@@ -8,8 +8,9 @@
 namespace spira::geodesic {
 
 // Where neighbouring generatrices run together: shortest paths on a mesh bend only at vertices
-// whose angles sum to more than 2 pi (the saddles of a faceted or corrugated wall), so paths from
-// neighbouring base points can funnel through the same vertex and share the rest of their way.
+// whose angles sum to more than 2 pi (the saddles of a waist, a faceted or corrugated wall), so
+// paths from neighbouring base points can funnel through the same vertex and share the rest of
+// their way.
 struct MergedNeighbours {
   size_t pairs = 0;          // neighbouring pairs that run together
   size_t first = 0;          // the longest stretch: lines[first] and the next one (cyclically)

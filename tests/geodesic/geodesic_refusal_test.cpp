@@ -7,6 +7,7 @@
 #include <cmath>
 #include <string>
 
+#include "builtin_plugins.h"
 #include "decomposer_geodesic/base_ring.h"
 #include "decomposer_geodesic/geodesic_decomposition.h"
 #include "decomposer_geodesic/length_spread.h"
@@ -15,6 +16,7 @@
 #include "spira/base/error.h"
 #include "spira/base/units.h"
 #include "spira/mesh/mesh_primitives.h"
+#include "spira/planning/planner.h"
 
 namespace spira::test {
 namespace {
@@ -225,13 +227,32 @@ TEST(GeodesicMergedNeighbours, OnAWaistedVaseGeodesicsShareColumnsUpToTheRim)
   EXPECT_NEAR(line.back().z(), vase.H, 1e-9);
 }
 
-TEST(GeodesicMergedNeighbours, AWaistedVaseIsRefusedNamingTheIsoValueStrategy)
+PlanOutput planWith(const TriangleMesh& mesh, const std::string& strategy)
 {
-  const Part part = Waist{}.part();
-  const std::string why = refusal([&] { decompose(part, windowed(360)); });
-  ASSERT_FALSE(why.empty()) << "generatrices that run together were not refused";
+  const MeshReport report = validateMesh(mesh);
+  PlanRequest request(mesh, report);
+  request.decomposerId = strategy;
+  NullProgress progress;
+  return planPart(builtinRegistry(), request, progress);
+}
+
+TEST(GeodesicMergedNeighbours, TheStrategyTheRefusalNamesPlansTheWaistedVase)
+{
+  // At the planner's defaults (h 2 mm +/- 10 %, bead 5.2 mm, 360 generatrices) the geodesic
+  // strategy is refused after its exact searches, before any spiral, and the iso-value strategy it
+  // names lays the same vase inside the window (judged by the deposit check alone); the geodesic
+  // spiral, laid regardless, puts 1,157 beads under earlier ones.
+  const TriangleMesh vase = makeTube([](double, double z) { return Waist{}.radius(z); },
+                                     [](double) { return Waist{}.H; }, Waist{}.segments, Waist{}.rings);
+  const std::string why = refusal([&] { planWith(vase, "decomposer.geodesic"); });
+  ASSERT_FALSE(why.empty());
   EXPECT_NE(why.find("run together"), std::string::npos) << why;
   EXPECT_NE(why.find("--strategy isovalue"), std::string::npos) << why;
+  const PlanOutput iso = planWith(vase, "decomposer.isovalue");
+  EXPECT_TRUE(iso.feasible()) << iso.deposits.summary();
+  // A cylinder still plans with geodesics: the checks refuse what no spiral follows, nothing else.
+  const PlanOutput tube = planWith(makeOpenCylinder(30.0, 60.0, 96, 30), "decomposer.geodesic");
+  EXPECT_TRUE(tube.feasible()) << tube.deposits.summary();
 }
 
 TEST(GeodesicMergedNeighbours, DevelopableWallsPassBothChecks)
