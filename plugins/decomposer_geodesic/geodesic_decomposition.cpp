@@ -97,33 +97,63 @@ std::string where(const Vec3& p)
 // track. There each revolution steps from one to the other along the wall instead of round it, so
 // the layer's thickness across the step collapses (to zero or below wherever their lengths differ
 // at all), and the surface beside the track is left to the next neighbour. Over more than a bead
-// width that is more than the bead can bridge.
-void refuseMergedNeighbours(const std::vector<GeneratrixLine>& lines, const GeodesicOptions& options,
-                            const std::optional<Vec3>& closure)
-{
-  if (!(options.beadWidth > 0.0) || lines.size() < 2) return;
-  double baseSpacing = 0.0;
-  for (size_t i = 0; i < lines.size(); ++i)
-    baseSpacing += (lines[(i + 1) % lines.size()].points.front() - lines[i].points.front()).norm();
-  baseSpacing /= double(lines.size());
-  const double gap = 0.01 * std::min(options.beadWidth, baseSpacing);
-  const MergedNeighbours m = findMergedNeighbours(lines, gap, options.beadWidth, closure, options.beadWidth);
-  if (m.pairs == 0) return;
-  std::ostringstream what;
-  what << "the geodesic generatrices run together: " << m.pairs << " of " << lines.size()
-       << " neighbouring pairs come within " << num(gap, 2)
-       << " mm of each other over more than a bead width (" << num(options.beadWidth, 2)
-       << " mm); the longest, from the base points at " << where(lines[m.first].points.front()) << " and "
-       << where(lines[(m.first + 1) % lines.size()].points.front()) << ", share " << num(m.stretch, 3)
-       << " mm from " << where(m.from)
-       << " on. Shortest paths on this mesh funnel through the same vertices (the saddles of a waist or "
-          "of its facets); along a shared track the spiral steps up the wall instead of round it, laying "
-          "beads under earlier ones and in mid-air, and fill-in generatrices (medians of the two) cannot "
-          "part them";
-  throw InputError(what.str(),
-                   "use --strategy isovalue: its generatrices follow a field's gradient and do not run "
-                   "together");
-}
+// width that is more than the bead can bridge. Checked batch by batch as the exact paths come in:
+// on a part where neighbours run together they do so all round, and the first batch tells.
+class RunTogetherCheck {
+ public:
+  RunTogetherCheck(const std::vector<BasePoint>& bases, const GeodesicOptions& options,
+                   const std::optional<Vec3>& closure)
+      : beadWidth_(options.beadWidth), closure_(closure), lines_(bases.size())
+  {
+    double spacing = 0.0;
+    for (size_t i = 0; i < bases.size(); ++i)
+      spacing += (bases[(i + 1) % bases.size()].point.position - bases[i].point.position).norm();
+    spacing /= double(std::max<size_t>(bases.size(), 1));
+    gap_ = 0.01 * std::min(beadWidth_, spacing);
+  }
+
+  // Takes the paths of lines [begin, end) and checks every pair whose two lines are now known.
+  void add(const std::vector<SolvedGeneratrix>& solved, size_t begin, size_t end)
+  {
+    const size_t n = lines_.size();
+    if (!(beadWidth_ > 0.0) || n < 2) return;
+    for (size_t i = begin; i < end; ++i) {
+      Polyline& line = lines_[i];
+      line.clear();
+      for (const PathPoint& p : solved[i].path.points) line.push_back(p.position);
+    }
+    const size_t upTo = end == n ? n : end - 1;
+    const MergedNeighbours m =
+        findMergedNeighbours(lines_, checked_, upTo, gap_, beadWidth_, closure_, beadWidth_);
+    if (m.pairs) refuse(m, upTo);
+    checked_ = upTo;
+  }
+
+ private:
+  [[noreturn]] void refuse(const MergedNeighbours& m, size_t checkedPairs) const
+  {
+    const size_t n = lines_.size();
+    std::ostringstream what;
+    what << "the geodesic generatrices run together: " << m.pairs << " of the first " << checkedPairs
+         << " neighbouring pairs (of " << n << ") come within " << num(gap_, 2)
+         << " mm of each other over more than a bead width (" << num(beadWidth_, 2)
+         << " mm); the longest, from the base points at " << where(lines_[m.first].front()) << " and "
+         << where(lines_[(m.first + 1) % n].front()) << ", share " << num(m.stretch, 3) << " mm from "
+         << where(m.from)
+         << " on. Shortest paths on this mesh funnel through the same vertices (the saddles of a waist or "
+            "of its facets); along a shared track the spiral steps up the wall instead of round it, laying "
+            "beads under earlier ones and in mid-air, and fill-in generatrices (medians of the two) cannot "
+            "part them";
+    throw InputError(
+        what.str(),
+        "use --strategy isovalue: its generatrices follow a field's gradient and do not run together");
+  }
+
+  double beadWidth_ = 0.0, gap_ = 0.0;
+  std::optional<Vec3> closure_;
+  std::vector<Polyline> lines_;
+  size_t checked_ = 0;  // pairs [0, checked_) passed
+};
 
 }  // namespace
 
@@ -198,6 +228,8 @@ GeodesicDecomposition decomposeByGeodesics(const TriangleMesh& mesh, const Bound
   const GeneratrixSolver solver(gm, guide, target);
   tbb::enumerable_thread_specific<Corridor> bands([&gm] { return Corridor(gm); });
   std::vector<SolvedGeneratrix> solved(n);
+  RunTogetherCheck together(bases, options,
+                            upper ? std::nullopt : std::optional<Vec3>(target.closure.position));
   for (size_t begin = 0; begin < n; begin += kBatch) {
     const size_t end = std::min(n, begin + kBatch);
     tbb::parallel_for(begin, end, [&](size_t i) {
@@ -205,6 +237,7 @@ GeodesicDecomposition decomposeByGeodesics(const TriangleMesh& mesh, const Bound
       solved[i] = solver.solve(bases[i].point, bands.local(), progress);
     });
     progress.checkCancel();
+    together.add(solved, begin, end);
     progress.report(0.2 + 0.65 * double(end) / double(n), "geodesics");
   }
   stats.geodesics = n;
@@ -233,7 +266,6 @@ GeodesicDecomposition decomposeByGeodesics(const TriangleMesh& mesh, const Bound
     lines[i] = resampleLine(lineFromPath(gm, solved[i], bases[i]), samples);
   });
   solved.clear();
-  refuseMergedNeighbours(lines, options, upper ? std::nullopt : std::optional<Vec3>(target.closure.position));
 
   FillInContext context{gm, locator, ring, upper, std::nullopt, samples};
   if (!upper) context.closure = target.closure;

@@ -49,26 +49,29 @@ Stretch longestTogether(const Polyline& a, const Polyline& b, double gap, const 
 
 }  // namespace
 
-MergedNeighbours findMergedNeighbours(const std::vector<GeneratrixLine>& lines, double gap, double minStretch,
-                                      const std::optional<Vec3>& closure, double closureRadius)
+MergedNeighbours findMergedNeighbours(const std::vector<Polyline>& lines, size_t firstPair, size_t endPair,
+                                      double gap, double minStretch, const std::optional<Vec3>& closure,
+                                      double closureRadius)
 {
   const size_t n = lines.size();
-  std::vector<Stretch> stretch(n);
-  tbb::parallel_for(size_t(0), n, [&](size_t i) {
-    const Polyline& a = lines[i].points;
-    const Polyline& b = lines[(i + 1) % n].points;
+  MergedNeighbours out;
+  if (n < 2 || firstPair >= endPair) return out;
+  std::vector<Stretch> stretch(endPair - firstPair);
+  tbb::parallel_for(firstPair, endPair, [&](size_t i) {
+    const Polyline& a = lines[i % n];
+    const Polyline& b = lines[(i + 1) % n];
     const Stretch ab = longestTogether(a, b, gap, closure, closureRadius);
     const Stretch ba = longestTogether(b, a, gap, closure, closureRadius);
-    stretch[i] = ab.length >= ba.length ? ab : ba;
+    stretch[i - firstPair] = ab.length >= ba.length ? ab : ba;
   });
-  MergedNeighbours out;
-  for (size_t i = 0; i < n; ++i) {
-    if (!(stretch[i].length > minStretch)) continue;
+  for (size_t i = firstPair; i < endPair; ++i) {
+    const Stretch& s = stretch[i - firstPair];
+    if (!(s.length > minStretch)) continue;
     ++out.pairs;
-    if (stretch[i].length > out.stretch) {
-      out.stretch = stretch[i].length;
-      out.first = i;
-      out.from = stretch[i].from;
+    if (s.length > out.stretch) {
+      out.stretch = s.length;
+      out.first = i % n;
+      out.from = s.from;
     }
   }
   return out;

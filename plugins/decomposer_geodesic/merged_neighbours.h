@@ -3,7 +3,7 @@
 #include <optional>
 #include <vector>
 
-#include "generatrix_line.h"
+#include "spira/path/trajectory.h"
 
 namespace spira::geodesic {
 
@@ -18,10 +18,12 @@ struct MergedNeighbours {
   Vec3 from = Vec3::Zero();  // where it starts
 };
 
-// The neighbouring pairs (the lines form a loop around the part) along which a point of one line
-// lies within `gap` of the other line over more than `minStretch` of its length. Points within
-// `closureRadius` of `closure` do not count: every generatrix of a closed part ends there.
-MergedNeighbours findMergedNeighbours(const std::vector<GeneratrixLine>& lines, double gap, double minStretch,
-                                      const std::optional<Vec3>& closure, double closureRadius);
+// Of the neighbouring pairs lines[i], lines[i + 1] (cyclically: the lines form a loop around the
+// part) for i in [firstPair, endPair), those along which a point of one line lies within `gap` of
+// the other line over more than `minStretch` of its length. Points within `closureRadius` of
+// `closure` do not count: every generatrix of a closed part ends there.
+MergedNeighbours findMergedNeighbours(const std::vector<Polyline>& lines, size_t firstPair, size_t endPair,
+                                      double gap, double minStretch, const std::optional<Vec3>& closure,
+                                      double closureRadius);
 
 }  // namespace spira::geodesic

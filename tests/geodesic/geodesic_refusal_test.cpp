@@ -209,10 +209,10 @@ TEST(GeodesicMergedNeighbours, OnAWaistedVaseGeodesicsShareColumnsUpToTheRim)
   free.pointsPerRevolution = 360;
   free.fillRounds = 0;
   const GeodesicDecomposition d = decompose(part, free);
-  std::vector<GeneratrixLine> lines(d.generatrices.lines.size());
-  for (size_t i = 0; i < lines.size(); ++i) lines[i].points = d.generatrices.lines[i];
+  const std::vector<Polyline>& lines = d.generatrices.lines;
   const double spacing = 2.0 * kPi * vase.R / 360.0;  // between base points
-  const MergedNeighbours m = findMergedNeighbours(lines, 0.01 * spacing, 5.2, std::nullopt, 0.0);
+  const MergedNeighbours m =
+      findMergedNeighbours(lines, 0, lines.size(), 0.01 * spacing, 5.2, std::nullopt, 0.0);
   ASSERT_GT(m.pairs, 0u);
   // The shared stretch runs up a column of vertices: in the meridian plane of one of the 24
   // columns, on the surface, and as long as that column from where the two meet to the rim
