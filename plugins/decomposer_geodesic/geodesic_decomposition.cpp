@@ -97,8 +97,9 @@ std::string where(const Vec3& p)
 // track. There each revolution steps from one to the other along the wall instead of round it, so
 // the layer's thickness across the step collapses (to zero or below wherever their lengths differ
 // at all), and the surface beside the track is left to the next neighbour. Over more than a bead
-// width that is more than the bead can bridge. Checked batch by batch as the exact paths come in:
-// on a part where neighbours run together they do so all round, and the first batch tells.
+// width that is more than the bead can bridge. Checked batch by batch as the exact paths come in,
+// so such a part is refused without waiting for the rest of its searches: any pair refuses, the
+// count reported is of the pairs checked so far.
 class RunTogetherCheck {
  public:
   RunTogetherCheck(const std::vector<BasePoint>& bases, const GeodesicOptions& options,
