@@ -7,6 +7,8 @@
 #include <cmath>
 #include <string>
 
+#include <tbb/global_control.h>
+
 #include "builtin_plugins.h"
 #include "decomposer_geodesic/base_ring.h"
 #include "decomposer_geodesic/geodesic_decomposition.h"
@@ -253,6 +255,20 @@ TEST(GeodesicMergedNeighbours, TheStrategyTheRefusalNamesPlansTheWaistedVase)
   // A cylinder still plans with geodesics: the checks refuse what no spiral follows, nothing else.
   const PlanOutput tube = planWith(makeOpenCylinder(30.0, 60.0, 96, 30), "decomposer.geodesic");
   EXPECT_TRUE(tube.feasible()) << tube.deposits.summary();
+}
+
+TEST(GeodesicMergedNeighbours, TheRefusalIsTheSameOnOneThreadAndOnMany)
+{
+  // No time budget and no order of completion in it: the same part gives the same words.
+  const Part part = Waist{}.part();
+  const std::string many = refusal([&] { decompose(part, windowed(360)); });
+  std::string one;
+  {
+    const tbb::global_control single(tbb::global_control::max_allowed_parallelism, 1);
+    one = refusal([&] { decompose(part, windowed(360)); });
+  }
+  ASSERT_FALSE(many.empty());
+  EXPECT_EQ(one, many);
 }
 
 TEST(GeodesicMergedNeighbours, DevelopableWallsPassBothChecks)
