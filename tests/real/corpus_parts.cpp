@@ -97,10 +97,9 @@ const KnownFailure* knownFailure(const std::string& file, const std::string& str
       "earlier ones): the spiral builder does not yet lay this real wall inside the window";
   static const std::vector<KnownFailure> known = {
       {"vase_honeycomb_wall.stl", "geodesic",
-       "exit 3, refused with the hint to use the iso-value strategy: its geodesic generatrices run together "
-       "(28 of the first 31 neighbouring pairs share up to 134 mm of their way through the saddle vertices "
-       "of the honeycomb facets), so no spiral can follow them; the iso-value plan is rejected too (next "
-       "mark)"},
+       "exit 3, refused with the hint to use the iso-value strategy: its geodesic generatrices meet (28 of "
+       "the first 31 neighbouring pairs, one sharing 131 mm of its way through the saddle vertices of the "
+       "honeycomb facets), so no spiral can follow them; the iso-value plan is rejected too (next mark)"},
       {"vase_honeycomb_wall.stl", "*", kNoAdvice},
       {"tube_straight_wall.stl", "envelope_projection",
        "the same command ends in exit 3 ('the part's skeleton does not rise steadily in z') in some runs and "
@@ -124,9 +123,8 @@ const KnownFailure* knownFailure(const std::string& file, const std::string& str
        "groove (1.25 mm wall)"},
       {"tube_straight_solid.stl", "geodesic",
        "exit 3, refused with the hint to use the iso-value strategy: on its mid-surface (wall 2.45 mm) the "
-       "geodesic generatrices run together (6 of the first 31 neighbouring pairs share up to 62 mm of their "
-       "way through saddle vertices), so no spiral can follow them; the iso-value plan misses by 6 beads "
-       "(its mark)"},
+       "geodesic generatrices meet (8 of the first 31 neighbouring pairs, through saddle vertices), so no "
+       "spiral can follow them; the iso-value plan misses by 6 beads (its mark)"},
       {"tube_straight_solid.stl", "envelope_projection",
        "exit 3: the mid-surface's skeleton does not rise steadily in z (hint: the iso-value strategy); a "
        "straight tube should plan"},
