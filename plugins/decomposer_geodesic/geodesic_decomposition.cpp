@@ -102,10 +102,10 @@ std::string where(const Vec3& p)
 // neighbour. Checked batch by batch as the exact paths come in, so such a part is refused without
 // waiting for the rest of its searches: any pair refuses, the count reported is of the pairs
 // checked so far.
-class RunTogetherCheck {
+class MeetingNeighboursCheck {
  public:
-  RunTogetherCheck(const std::vector<BasePoint>& bases, const GeodesicOptions& options,
-                   const std::optional<Vec3>& closure)
+  MeetingNeighboursCheck(const std::vector<BasePoint>& bases, const GeodesicOptions& options,
+                         const std::optional<Vec3>& closure)
       : beadWidth_(options.beadWidth), closure_(closure), lines_(bases.size())
   {
     double spacing = 0.0;
@@ -135,20 +135,18 @@ class RunTogetherCheck {
   [[noreturn]] void refuse(const MergedNeighbours& m, size_t checkedPairs) const
   {
     const size_t n = lines_.size();
+    static const char* const why =
+        " on. Shortest paths on this mesh bend round or through the same vertices (the saddles of a waist or "
+        "of its facets); where two meet, the spiral steps up the wall instead of round it, laying beads far "
+        "thinner than the window, under earlier ones or in mid-air, and fill-in generatrices (medians of the "
+        "two) cannot part them";
     std::ostringstream what;
-    what
-        << "neighbouring geodesic generatrices meet: " << m.pairs << " of the first " << checkedPairs
-        << " neighbouring pairs (of " << n << ") come within " << num(gap_, 2)
-        << " mm of each other (1 % of their spacing at the base); the longest stretch, from the base points "
-           "at "
-        << where(lines_[m.first].front()) << " and " << where(lines_[(m.first + 1) % n].front()) << ", is "
-        << num(m.stretch, 3) << " mm from " << where(m.from)
-        << " on. Shortest paths on this mesh bend round or through the same vertices (the saddles of a waist "
-           "or of its facets); where two meet, the spiral steps up the wall instead of round it, laying "
-           "beads "
-           "far thinner than the window, under earlier ones or in mid-air, and fill-in generatrices (medians "
-           "of "
-           "the two) cannot part them";
+    what << "neighbouring geodesic generatrices meet: " << m.pairs << " of the first " << checkedPairs
+         << " neighbouring pairs (of " << n << ") come within " << num(gap_, 2)
+         << " mm of each other (1 % of their spacing at the base); the longest stretch, from the base "
+         << "points at " << where(lines_[m.first].front()) << " and "
+         << where(lines_[(m.first + 1) % n].front()) << ", is " << num(m.stretch, 3) << " mm from "
+         << where(m.from) << why;
     throw InputError(what.str(),
                      "use --strategy isovalue: its generatrices follow a field's gradient and do not meet");
   }
@@ -232,8 +230,8 @@ GeodesicDecomposition decomposeByGeodesics(const TriangleMesh& mesh, const Bound
   const GeneratrixSolver solver(gm, guide, target);
   tbb::enumerable_thread_specific<Corridor> bands([&gm] { return Corridor(gm); });
   std::vector<SolvedGeneratrix> solved(n);
-  RunTogetherCheck together(bases, options,
-                            upper ? std::nullopt : std::optional<Vec3>(target.closure.position));
+  MeetingNeighboursCheck meeting(bases, options,
+                                 upper ? std::nullopt : std::optional<Vec3>(target.closure.position));
   for (size_t begin = 0; begin < n; begin += kBatch) {
     const size_t end = std::min(n, begin + kBatch);
     tbb::parallel_for(begin, end, [&](size_t i) {
@@ -241,7 +239,7 @@ GeodesicDecomposition decomposeByGeodesics(const TriangleMesh& mesh, const Bound
       solved[i] = solver.solve(bases[i].point, bands.local(), progress);
     });
     progress.checkCancel();
-    together.add(solved, begin, end);
+    meeting.add(solved, begin, end);
     progress.report(0.2 + 0.65 * double(end) / double(n), "geodesics");
   }
   stats.geodesics = n;
