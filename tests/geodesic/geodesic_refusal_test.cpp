@@ -290,6 +290,35 @@ TEST(GeodesicMergedNeighbours, DevelopableWallsPassBothChecks)
   for (double L : k.exactLengths) EXPECT_NEAR(L, std::hypot(H, R - r1), 1e-6);
 }
 
+TEST(GeodesicMergedNeighbours, LinesMeetingOnlyAtTheClosurePointDoNotCount)
+{
+  // 360 straight meridians of a flat disc of radius 40 mm, 40 points each, all ending at its centre:
+  // at radius r neighbours lie 2 pi r / 360 apart, under 1 % of their base spacing (0.0070 mm)
+  // only within 0.4 mm of the centre, where the inner point nearest to it (at 1.03 mm) stays clear;
+  // at 1 % of a bead (0.052 mm) they meet from r = 2.98 mm in, which the closure's bead excludes.
+  const size_t n = 360, points = 40;
+  const double R = 40.0;
+  std::vector<Polyline> lines(n);
+  for (size_t i = 0; i < n; ++i) {
+    const double a = 2.0 * kPi * double(i) / double(n);
+    for (size_t k = 0; k < points; ++k) {
+      const double r = R * (1.0 - double(k) / double(points - 1));
+      lines[i].push_back(Vec3(r * std::cos(a), r * std::sin(a), 0.0));
+    }
+  }
+  const Vec3 centre = Vec3::Zero();
+  const double spacing = 2.0 * R * std::sin(kPi / double(n));
+  EXPECT_EQ(findMergedNeighbours(lines, 0, n, 0.01 * spacing, 0.0, centre, 5.2).pairs, 0u);
+  EXPECT_EQ(findMergedNeighbours(lines, 0, n, 0.052, 0.0, centre, 5.2).pairs, 0u);
+  // Without the closure's bead every pair meets over the inner points within 2.98 mm of the centre
+  // (r sin(1 degree) < 0.052 mm): those at 2.05 and 1.03 mm, a stretch of 1.03 mm.
+  const MergedNeighbours m = findMergedNeighbours(lines, 0, n, 0.052, 0.0, std::nullopt, 0.0);
+  EXPECT_EQ(m.pairs, n);
+  const double step = R / double(points - 1);
+  EXPECT_NEAR(m.from.norm(), 2.0 * step, 1e-9);
+  EXPECT_NEAR(m.stretch, step, 1e-9);
+}
+
 TEST(GeodesicMergedNeighbours, AClosedPartsGeneratricesMeetOnlyAtItsClosurePoint)
 {
   // A hemisphere's meridians all end at the pole: within a bead of it they are closer than any
