@@ -60,9 +60,9 @@ struct GeodesicDecomposition {
 // Throws InputError when the base does not go around its centroid, or when the target cannot be
 // reached from a base point on the surface; and, when the window is known, when the generatrices
 // cannot make one spiral in it: before the exact searches when bounds on their lengths already
-// break thesis Eq. 3.6, after them when the exact lengths do, or when neighbouring generatrices
-// run together (see MergedNeighbours; fill-ins cannot part them). Cancelled when `progress` is
-// cancelled.
+// break thesis Eq. 3.6, after them when the exact lengths do, and during them as soon as two
+// neighbouring generatrices meet (see MergedNeighbours; fill-ins cannot part them). Cancelled when
+// `progress` is cancelled.
 GeodesicDecomposition decomposeByGeodesics(const TriangleMesh& mesh, const BoundaryLoop& lower,
                                            const BoundaryLoop* upper, const std::optional<Vec3>& closurePoint,
                                            const std::vector<double>* baseDistance,

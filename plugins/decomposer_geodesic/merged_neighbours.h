@@ -12,7 +12,7 @@ namespace spira::geodesic {
 // wall), so paths from neighbouring base points can pass the same vertex on either side, or funnel
 // through it and share the rest of their way.
 struct MergedNeighbours {
-  size_t pairs = 0;          // neighbouring pairs that run together
+  size_t pairs = 0;          // neighbouring pairs that meet
   size_t first = 0;          // the longest stretch: lines[first] and the next one (cyclically)
   double stretch = 0.0;      // its length along lines[first], mm (0: they touch at one point)
   Vec3 from = Vec3::Zero();  // where it starts
