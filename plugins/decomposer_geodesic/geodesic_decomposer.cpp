@@ -79,6 +79,8 @@ DecomposeResult GeodesicDecomposer::decompose(const DecomposeInput& input, const
   options.pointSpacing = values.internal(schema_, "level_spacing");
   options.coverageTolerance = values.internal(schema_, "coverage_tolerance");
   options.fillRounds = static_cast<int>(values.getInt("fill_rounds"));
+  options.window = {input.window.hMin, input.window.hMax, input.window.tolerance};
+  options.beadWidth = input.window.beadWidth;
   const bool open = input.partClass == PartClass::Open;
   // The planner's field on closed parts is the distance from the base: the fallback closure point.
   const std::vector<double>* baseDistance = open ? nullptr : input.field;

@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "length_spread.h"
 #include "spira/base/progress.h"
 #include "spira/mesh/boundary_loops.h"
 #include "spira/mesh/triangle_mesh.h"
@@ -17,6 +18,9 @@ struct GeodesicOptions {
   double coverageTolerance = 0.2;    // eps_0 of Eq. 3.9, mm
   int fillRounds = 6;                // at most this many rounds of fill-in generatrices
   size_t maxLinesFactor = 16;        // and at most this many times n_pts generatrices in all
+  // What the spiral will lay; unknown (zero) turns the checks that need it off.
+  LayerWindow window;
+  double beadWidth = 0.0;  // mm
 };
 
 // Where the time went and how the exact searches went, for reports and the benchmark.
@@ -54,7 +58,11 @@ struct GeodesicDecomposition {
 // base along `baseDistance` (the geodesic distance from the lower edge, computed here if null).
 //
 // Throws InputError when the base does not go around its centroid, or when the target cannot be
-// reached from a base point on the surface; Cancelled when `progress` is cancelled.
+// reached from a base point on the surface; and, when the window is known, when the generatrices
+// cannot make one spiral in it: before the exact searches when bounds on their lengths already
+// break thesis Eq. 3.6, after them when the exact lengths do, and during them as soon as two
+// neighbouring generatrices meet (see MergedNeighbours; fill-ins cannot part them). Cancelled when
+// `progress` is cancelled.
 GeodesicDecomposition decomposeByGeodesics(const TriangleMesh& mesh, const BoundaryLoop& lower,
                                            const BoundaryLoop* upper, const std::optional<Vec3>& closurePoint,
                                            const std::vector<double>* baseDistance,

@@ -111,6 +111,8 @@ void finishMonoBranch(const PluginRegistry& registry, const PlanRequest& request
                        out.topology.upper,
                        out.hasClosure ? std::optional<Vec3>(out.closure.point) : std::nullopt,
                        &out.field};
+  input.window = {settings.spiral.hMin, settings.spiral.hMax,
+                  settings.spiral.heightTolerance * settings.spiral.h, settings.process.beadWidth};
   std::string why;
   if (!decomposer.accepts(input, &why))
     throw InputError(decomposer.id() + " cannot plan this part: " + why,

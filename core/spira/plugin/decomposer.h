@@ -12,6 +12,13 @@
 
 namespace spira {
 
+// The process window and bead the spiral will lay on the generatrices, mm.
+struct DecomposeWindow {
+  double hMin = 0.0, hMax = 0.0;  // thinnest and thickest deposit
+  double tolerance = 0.0;         // on both
+  double beadWidth = 0.0;
+};
+
 // The part as a decomposer sees it: the welded mesh and its free edges.
 struct DecomposeInput {
   const TriangleMesh& mesh;
@@ -24,6 +31,9 @@ struct DecomposeInput {
   // edge and 1 on the upper one. Field-based decomposers (decomposer.isovalue) need it; the
   // caller keeps it alive for the duration of the call.
   const std::vector<double>* field = nullptr;
+  // What the spiral will lay, for decomposers that can tell from their generatrices alone that no
+  // spiral can follow them; zero: not known.
+  DecomposeWindow window{};
 };
 
 struct DecomposeResult {
