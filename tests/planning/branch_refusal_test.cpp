@@ -2,8 +2,13 @@
 
 #include <string>
 
+#include "builtin_plugins.h"
 #include "spira/base/error.h"
+#include "spira/io/import_service.h"
 #include "spira/planning/branch_refusal.h"
+#include "spira/planning/level_base.h"
+#include "spira/planning/planner.h"
+#include "support/test_support.h"
 
 namespace spira::test {
 namespace {
@@ -57,6 +62,38 @@ TEST(BranchRefusal, WideFreeEdgesLeaveAHoleOrANarrowNeck)
   EXPECT_NE(m.find("3 free edges"), std::string::npos) << m;
   EXPECT_NE(m.find("hole in a wall"), std::string::npos) << m;
   EXPECT_NE(m.find("narrows below one bead ring (16.3 mm)"), std::string::npos) << m;
+}
+
+// The corpus's scanned bifurcation (centimetres), its slanted base levelled, under a 4.8 mm bead:
+// every free edge is at least one ring around (15.1 mm), so the part splits, but one arm narrows
+// below a ring between the junction and its edge and stays on the trunk. The refusal names that
+// sub-part, not a hole.
+TEST(BranchRefusal, ABranchNarrowingBetweenJunctionAndEdgeIsNamedOnItsSubPart)
+{
+  NullProgress progress;
+  ParamSet unit;
+  unit.set("unit", std::string("cm"));
+  const ImportedPart part =
+      importPart(builtinRegistry(), sourceDir() / "tests/data/real/junction_fine_cm.stl", &unit, progress);
+  constexpr double kSubstrateZ = 406.961;
+  LevelledBase levelled =
+      levelBase(part.mesh, findPartTopology(part.report, part.mesh, kSubstrateZ, -1, true).lower);
+  for (Vec3& v : levelled.mesh.vertices) v.z() += kSubstrateZ - levelled.cutZ;
+  const MeshReport report = validateMesh(levelled.mesh);
+  PlanRequest request(levelled.mesh, report);
+  request.substrateZ = kSubstrateZ;
+  request.params["process"].set("bead_width", 4.8);
+  try {
+    planPart(builtinRegistry(), request, progress);
+    FAIL() << "planned a junction whose arm narrows below the bead";
+  } catch (const InputError& e) {
+    const std::string m = e.fullMessage();
+    EXPECT_NE(m.find("sub-part 0 (trunk) of the multi-branch part keeps 3 free edges"), std::string::npos)
+        << m;
+    EXPECT_NE(m.find("narrows below one bead ring (15.1 mm)"), std::string::npos) << m;
+    EXPECT_NE(m.find("--bead-width"), std::string::npos) << m;
+    EXPECT_EQ(m.find("hole"), std::string::npos) << m;
+  }
 }
 
 }  // namespace

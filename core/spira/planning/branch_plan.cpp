@@ -4,6 +4,7 @@
 
 #include "spira/base/error.h"
 #include "spira/path/too_short_error.h"
+#include "spira/planning/branch_refusal.h"
 
 namespace spira {
 
@@ -138,13 +139,11 @@ void planBranchPieces(const PluginRegistry& registry, const PlanRequest& whole, 
   const size_t count = pieces.pieces.size();
   for (size_t k = 0; k < count; ++k) {
     const BranchPiece& piece = pieces.pieces[k];
-    PlanRequest sub(piece.mesh, piece.report);
-    sub.substrateZ = whole.substrateZ;
+    const size_t freeEdges = piece.report.boundaryLoops.size();
+    if (freeEdges > 2) refuseUnsplitBranch(role(piece, k), freeEdges, pieces.minPerimeter);
+    PlanRequest sub(piece.mesh, piece.report, whole);
     sub.lowerLoopOverride = piece.lowerLoop;
     sub.baseSupportGap = piece.supportGap;
-    sub.decomposerId = whole.decomposerId;
-    sub.closureFinderId = whole.closureFinderId;
-    sub.params = whole.params;
     SubProgress p(progress, static_cast<double>(k) / count, static_cast<double>(k + 1) / count,
                   role(piece, k));
     PlanOutput plan;

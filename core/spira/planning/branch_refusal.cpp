@@ -53,4 +53,15 @@ void refuseUnbranchedPart(const std::vector<BoundaryLoop>& loops, double minPeri
                    "branch");
 }
 
+void refuseUnsplitBranch(const std::string& role, size_t freeEdges, double minPerimeter)
+{
+  throw InputError(
+      role + " of the multi-branch part keeps " + std::to_string(freeEdges) +
+          " free edges: one of its branches narrows below one bead ring (" + mmText(minPerimeter) +
+          ") between the junction and its free edge, so it could not be split off and laid as a "
+          "branch of its own",
+      "use a narrower bead (--bead-width) or scale the part up in the CAD tool (check --unit if it "
+      "should be larger): Spira lays a branch only where its wall is at least one bead ring around");
+}
+
 }  // namespace spira

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include "spira/mesh/boundary_loops.h"
@@ -13,5 +14,11 @@ namespace spira {
 // as `spira-cli info` lists them. Always throws InputError.
 [[noreturn]] void refuseUnbranchedPart(const std::vector<BoundaryLoop>& loops, double minPerimeter,
                                        double beadWidth);
+
+// A sub-part of a split part that still has more free edges than a base and a top: one of its
+// branches narrows below one bead ring (`minPerimeter`) between the junction and its free edge,
+// so it was not split off. `role` names the sub-part ("sub-part 0 (trunk)"). Always throws
+// InputError.
+[[noreturn]] void refuseUnsplitBranch(const std::string& role, size_t freeEdges, double minPerimeter);
 
 }  // namespace spira

@@ -222,6 +222,7 @@ BranchDecomposition splitIntoMonoBranches(const TriangleMesh& mesh, const std::v
   BranchDecomposition out;
   out.field = baseField ? *baseField : heatGeodesicDistance(mesh, base, HeatDistanceOptions{}, progress);
   out.junctionGap = options.junctionGap > 0 ? options.junctionGap : 0.5 * options.thinnestDeposit;
+  out.minPerimeter = options.minPerimeter;
 
   std::vector<int> all(mesh.faceCount());
   for (size_t f = 0; f < all.size(); ++f) all[f] = static_cast<int>(f);

@@ -56,6 +56,7 @@ struct BranchDecomposition {
   std::vector<BranchSaddle> saddles;
   std::vector<double> field;  // geodesic distance from the base over the input mesh
   double junctionGap = 0.0;   // mm, as used
+  double minPerimeter = 0.0;  // mm: contours shorter than this were not taken for branches
   double gapArea = 0.0;       // mm^2, all saddles
   bool depthLimited = false;  // a piece still branches but maxDepth was reached
 };
