@@ -65,6 +65,16 @@ const std::vector<CorpusPart>& corpusParts()
        406.961,
        kBranching,
        {}},
+      // The coarse junction made a 420 mm WAAM part; its scanned base is cut at a slant (16 mm), so
+      // it is planned with --level-base. The test-side check judges its beads but not its coverage
+      // (the levelled surface is not the file's).
+      {"junction_waam_mm.stl",
+       "3-leg junction at WAAM scale (190 x 141 x 416 mm), slanted base levelled",
+       "mm",
+       0.0,
+       kBranching,
+       {},
+       {"--level-base"}},
       // Envelope projection plans open parts only: for a dome it must say which strategy to use.
       {"dome_cap_in.obj",
        "dome (spherical cap) OBJ, read in inches, rim at z = 2.49 mm",

@@ -33,6 +33,7 @@ struct CorpusPart {
   double substrateZ = 0.0;  // mm: the plane the part stands on (its lowest point), --substrate-z
   Expectation expectation;
   std::vector<StrategyExpectation> byStrategy;
+  std::vector<std::string> flags = {};  // more spira-cli plan flags (--level-base)
 };
 
 const std::vector<CorpusPart>& corpusParts();

@@ -71,6 +71,12 @@ def cut_below(T, z):
     return T[(T[:, :, 2] >= z).all(axis=1)]
 
 
+def waam_scale(T, factor=100.0):
+    """A vessel scan made a WAAM part: lowest point moved to the origin, then scaled (a 4.2 cm
+    junction becomes 420 mm tall)."""
+    return (T - T.reshape(-1, 3).min(axis=0)) * factor
+
+
 def collapse_to(T, target):
     """Re-tessellates a surface coarser by shortest-edge collapses to the edge midpoint, never
     touching a boundary vertex (the free edges keep their vertices) and refusing collapses that
@@ -178,6 +184,9 @@ def main(src, out):
     write_stl(o("y_branch_artery_m.stl"), artery, b"gmsh benchmarks/stl/artery.stl (GPL-2.0-or-later)")
     fine = read_any(s("gmsh_bifurcation.stl"))
     write_stl(o("junction_coarse_cm.stl"), collapse_to(fine, 4000), b"gmsh bifurcation.stl coarsened (GPL-2.0+)")
+    # From the file as written, so the float32 rounding is the coarse file's own.
+    write_stl(o("junction_waam_mm.stl"), waam_scale(read_any(o("junction_coarse_cm.stl"))),
+              b"gmsh bifurcation.stl coarsened, WAAM scale (GPL-2.0+)")
     dome = read_any(s("pmp_hemisphere.off"))
     write_obj(o("dome_cap_in.obj"), dome, "pmp-library data/off/hemisphere.off (MIT), as OBJ")
 
