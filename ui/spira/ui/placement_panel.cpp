@@ -45,6 +45,10 @@ QDoubleSpinBox* makeField(double range, const QString& suffix, const QString& ti
   box->setAlignment(Qt::AlignRight);
   // One edit per step or per finished entry, never per typed digit.
   box->setKeyboardTracking(false);
+  // Sized for "-100000.00 mm" the box would be wider than the dock and clipped: it takes the
+  // width the dock has instead.
+  box->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Fixed);
+  box->setMinimumWidth(box->fontMetrics().horizontalAdvance(QStringLiteral("-0000.00 mm")) + 30);
   return box;
 }
 
@@ -102,7 +106,7 @@ PlacementPanel::PlacementPanel(Document& doc, QWidget* parent)
   const char* axes[3] = {"X", "Y", "Z"};
   auto* move = new QGroupBox(tr("Position (world frame)"), body);
   auto* moveForm = new QFormLayout(move);
-  auto* turn = new QGroupBox(tr("Rotation about the world axes, X then Y then Z"), body);
+  auto* turn = new QGroupBox(tr("Rotation about world X, then Y, then Z"), body);
   auto* turnForm = new QFormLayout(turn);
   for (int i = 0; i < 3; ++i) {
     fields_[static_cast<size_t>(i)] = makeField(
@@ -148,6 +152,8 @@ PlacementPanel::PlacementPanel(Document& doc, QWidget* parent)
   auto* baseLayout = new QVBoxLayout(baseBox);
   lower_ = new QComboBox(baseBox);
   lower_->setObjectName(QStringLiteral("lowerBoundaryCombo"));
+  lower_->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+  lower_->setMinimumContentsLength(16);
   lower_->setToolTip(
       tr("The boundary loop the spiral starts from: the edge of the part that stands on the "
          "substrate"));
@@ -224,7 +230,7 @@ void PlacementPanel::refreshLoops()
   if (part->mesh != loopsMesh_) {
     loopsMesh_ = part->mesh;
     lower_->clear();
-    lower_->addItem(tr("Automatic (the loop nearest the substrate)"));
+    lower_->addItem(tr("Automatic (the lowest loop)"));
     const MeshReport report = validateMesh(*part->mesh);
     for (size_t i = 0; i < report.boundaryLoops.size(); ++i) {
       const BoundaryLoop& loop = report.boundaryLoops[i];
