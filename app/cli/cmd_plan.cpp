@@ -92,9 +92,7 @@ PlanOutput planOrAdvise(const PluginRegistry& registry, const PlanRequest& reque
   } catch (const BaseNotLevelError& e) {
     refuseWithAdvice(e, adviseLevelBase(registry, request, e, progress));
   } catch (const InputError& e) {
-    const PlanAdvice advice = adviseChange(registry, request, nullptr, progress, 2);
-    if (!advice.found) throw;
-    throw InputError(e.what(), advice.change + " (" + advice.flags + "): planned and checked feasible");
+    refuseWithAdvice(e, adviseChange(registry, request, nullptr, progress, 2));
   }
 }
 

@@ -197,6 +197,20 @@ TEST(CliPlan, TooDifferentGeneratricesAreInfeasibleWithTheReportWritten)
   EXPECT_NE(r.out.find("INFEASIBLE"), std::string::npos);
 }
 
+// A strategy that refuses a part names the one that should work; Spira plans that one too and,
+// when it does not plan the part either (the corpus's honeycomb vase), says so rather than leave
+// advice nobody checked.
+TEST(CliPlan, ARefusalsAdviceThatDoesNotPlanSaysWhatItWasTriedWith)
+{
+  TempDir dir;
+  const CliRun r = runCli({"plan", (sourceDir() / "tests/data/real/vase_honeycomb_wall.stl").string(), "-o",
+                           (dir / "plan").string(), "--strategy", "geodesic"});
+  EXPECT_EQ(r.exitCode, 3) << r.err;
+  EXPECT_NE(r.err.find("use --strategy isovalue"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("tried: use the isovalue strategy: "), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("planned and checked feasible"), std::string::npos) << r.err;
+}
+
 // A Y-shaped tube (three free edges, refused before multi-branch planning): three sub-paths in
 // build order, trunk first, numbered in the path column, each an unbroken spiral.
 TEST(CliPlan, YTubeIsPlannedAsSubPathsTrunkFirst)
