@@ -73,29 +73,6 @@ void printSummary(const PlanOutput& plan, std::ostream& out)
   for (const auto& w : plan.warnings) out << "warning: " << w << "\n";
 }
 
-// The refusal again, with the advice's change when it plans, or what was tried, in its hint.
-[[noreturn]] void refuseWithAdvice(const InputError& e, const PlanAdvice& advice)
-{
-  if (advice.found) throw InputError(e.what(), advice.text());
-  std::string hint = e.hint();
-  for (const std::string& t : advice.tried) hint += "; tried: " + t;
-  throw InputError(e.what(), hint);
-}
-
-// A part the strategy refuses gets the change that plans it, when one does, in the error's hint.
-PlanOutput planOrAdvise(const PluginRegistry& registry, const PlanRequest& request, Progress& progress)
-{
-  try {
-    return planPart(registry, request, progress);
-  } catch (const TooShortError& e) {
-    refuseWithAdvice(e, adviseSmallerDeposit(registry, request, e, progress));
-  } catch (const BaseNotLevelError& e) {
-    refuseWithAdvice(e, adviseLevelBase(registry, request, e, progress));
-  } catch (const InputError& e) {
-    refuseWithAdvice(e, adviseChange(registry, request, nullptr, progress, 2));
-  }
-}
-
 }  // namespace
 
 int cmdPlan(const std::vector<std::string>& argv)

@@ -217,10 +217,19 @@ TEST(PlanCancel, ContradictorySettingsFailWithTheHintAndInfeasiblePlansAreFlagge
   EXPECT_EQ(spiral.violationCount(), report.value("violations", 0LL));  // the same rule as the planner's
   EXPECT_EQ(spiral.shownViolationCount(), spiral.violationCount());
   bool warned = false;
+  QString advice;
   for (int i = 0; i < w.logPanel()->count(); ++i)
-    warned = warned ||
-             (w.logPanel()->level(i) == LogLevel::Warning && w.logPanel()->text(i).contains("infeasible"));
+    if (w.logPanel()->level(i) == LogLevel::Warning && w.logPanel()->text(i).contains("infeasible")) {
+      warned = true;
+      advice = w.logPanel()->text(i);
+    }
   EXPECT_TRUE(warned);
+  // The advice was planned, not guessed: the change found feasible, or each change tried and why
+  // it failed (a wider window than +/-50 % is not advice).
+  EXPECT_TRUE(advice.contains("Spira's advice: ")) << advice.toStdString();
+  EXPECT_TRUE(advice.contains("planned and checked feasible") ||
+              advice.contains("no change of window or strategy"))
+      << advice.toStdString();
   // The offending points are listed, each message selecting its point when clicked.
   auto* list = w.logPanel()->findChild<QListWidget*>();
   ASSERT_NE(list, nullptr);

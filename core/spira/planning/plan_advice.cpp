@@ -96,6 +96,15 @@ class Trial {
   int planned_ = 0;
 };
 
+// The refusal again, with the advice's change when it plans, or what was tried, in its hint.
+[[noreturn]] void refuseWithAdvice(const InputError& e, const PlanAdvice& advice)
+{
+  if (advice.found) throw InputError(e.what(), advice.text());
+  std::string hint = e.hint();
+  for (const std::string& t : advice.tried) hint += "; tried: " + t;
+  throw InputError(e.what(), hint);
+}
+
 }  // namespace
 
 std::string PlanAdvice::text() const
@@ -221,8 +230,8 @@ PlanAdvice adviseLevelBase(const PluginRegistry& registry, const PlanRequest& re
   PlanRequest r(levelled.mesh, report, request);
   r.lowerLoopOverride = -1;
   const std::string change = "cut the part level at z = " + fixedText(levelled.cutZ, 2) +
-                             " mm and stand it on the substrate (" + fixedText(levelled.removed, 2) +
-                             " mm off its base)";
+                             " mm and stand it on the substrate, " + fixedText(levelled.removed, 2) +
+                             " mm off its base (Placement > Level Base in Spira)";
   Trial trial(registry, request, progress, 1);
   if (trial.plans(r, change)) {
     advice.found = true;
@@ -231,6 +240,19 @@ PlanAdvice adviseLevelBase(const PluginRegistry& registry, const PlanRequest& re
   }
   advice.tried = trial.tried;
   return advice;
+}
+
+PlanOutput planOrAdvise(const PluginRegistry& registry, const PlanRequest& request, Progress& progress)
+{
+  try {
+    return planPart(registry, request, progress);
+  } catch (const TooShortError& e) {
+    refuseWithAdvice(e, adviseSmallerDeposit(registry, request, e, progress));
+  } catch (const BaseNotLevelError& e) {
+    refuseWithAdvice(e, adviseLevelBase(registry, request, e, progress));
+  } catch (const InputError& e) {
+    refuseWithAdvice(e, adviseChange(registry, request, nullptr, progress, 2));
+  }
 }
 
 }  // namespace spira

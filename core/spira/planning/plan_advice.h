@@ -39,6 +39,12 @@ PlanAdvice adviseSmallerDeposit(const PluginRegistry& registry, const PlanReques
 PlanAdvice adviseLevelBase(const PluginRegistry& registry, const PlanRequest& request,
                            const BaseNotLevelError& refusal, Progress& progress);
 
+// planPart(), and for a part it refuses, the refusal again with the change that plans it in its
+// hint once one was planned and checked feasible (a smaller h for a wall too short for its ramps,
+// the levelled base, another strategy), or with what was tried. The CLI and the desktop app plan
+// through it.
+PlanOutput planOrAdvise(const PluginRegistry& registry, const PlanRequest& request, Progress& progress);
+
 // No WAAM process lays a steady bead thinner than this (mm): a smaller h is not advice.
 constexpr double kThinnestAdvisedDeposit = 0.5;
 

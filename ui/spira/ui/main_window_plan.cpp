@@ -94,8 +94,8 @@ void MainWindow::finishPlan(const TaskOutcome& outcome, const DocumentState& sna
                      .arg(QLocale().toString(result.seconds, 'f', 2), fromStd(result.summary)));
       if (!result.feasible)
         log_->warning(tr("The plan is infeasible: %1.").arg(fromStd(result.depositSummary)),
-                      tr("The points are listed below (click one to select it). Widen the window "
-                         "(Thinnest/Thickest deposit), change the nominal height or the strategy."));
+                      tr("The points are listed below (click one to select it). Spira's advice: %1.")
+                          .arg(fromStd(result.advice)));
     }
   }
   emit planFinished(outcome);

@@ -11,6 +11,7 @@
 #include "spira/document/invalidation.h"
 #include "spira/mesh/mesh_report.h"
 #include "spira/planning/placement_frame.h"
+#include "spira/planning/plan_advice.h"
 #include "spira/planning/plan_files.h"
 #include "spira/planning/plan_schemas.h"
 #include "spira/planning/planner.h"
@@ -98,7 +99,7 @@ PlanJobResult runPlan(const DocumentState& snapshot, const PluginRegistry& regis
   request.closureFinderId = settings.closureFinderId;
   request.params = settings.params;
   SubProgress planProgress(progress, 0.0, kPlanShare, "");
-  PlanOutput plan = planPart(registry, request, planProgress);
+  PlanOutput plan = planOrAdvise(registry, request, planProgress);
   if (!frame.identity()) {
     frame.toPart(plan.spiral.trajectory);
     frame.toPart(plan.generatrices);
@@ -108,6 +109,11 @@ PlanJobResult runPlan(const DocumentState& snapshot, const PluginRegistry& regis
   PlanJobResult out;
   out.feasible = plan.feasible();
   out.depositSummary = plan.deposits.summary();
+  if (!out.feasible) {
+    SubProgress adviceProgress(progress, kPlanShare, kPlanShare, "looking for a change that plans it");
+    const PlanAdvice advice = adviseChange(registry, request, &plan, adviceProgress);
+    out.advice = advice.found ? advice.change + ": planned and checked feasible" : advice.text();
+  }
   out.warnings = plan.warnings;
   out.summary = plan.solid ? plan.solid->summary() + "; " + summaryLine(plan) : summaryLine(plan);
   out.windowViolations = plan.spiral.report.violations.size();

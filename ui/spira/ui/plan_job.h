@@ -33,6 +33,8 @@ struct PlanJobResult {
   bool feasible = false;
   std::string summary;         // one line: revolutions, points, heights, build time
   std::string depositSummary;  // the deposit check's verdict in one sentence
+  // An infeasible plan: the change Spira planned and found feasible, or what it tried.
+  std::string advice;
   size_t windowViolations = 0;
   size_t limitViolations = 0;
   double seconds = 0.0;
