@@ -273,37 +273,44 @@ SpiralResult buildPass(const Generatrices& g, const std::vector<ArcLengthPolylin
   return result;
 }
 
-// Neighbouring generatrices' scales on one ramp revolution (a circle) may differ by at most
-// `limit`; a scale is lowered towards its neighbour, never raised above its own target.
+// Ramp scales are smoothed and limited along each revolution, from its first generatrix to its
+// last, and never across its seam. Nothing couples a revolution's last point to the next one's
+// first: the seam point takes its travel direction from the chord before it (computeFrames), and
+// the ramp step jumps there (h_max on the last generatrix, h_min on the next revolution's first), so
+// where the lean changes with height the lean a step crosses jumps with it. Nor is a revolution's
+// last point a neighbour of its own first, a whole ramp climb (1.6 mm at +-10 %) below it. On a
+// tube whose wall starts leaning 19 degrees at z = 6.2 mm, the fourth full ramp needs a stretch of
+// 1.02 on its first generatrices and 1.07 on its last: a limit closed around the revolution would
+// hold the last ones to 1.04 (the path dips 0.05 mm before the seam, its travel direction falls 10
+// degrees and the bead measured along the tilted build direction grows to 2.235 mm), and smoothing
+// across the seam would pull the first ones towards the previous revolution's last (1.0, below
+// the bend).
+
+// Neighbouring generatrices' scales on one ramp revolution may differ by at most `limit`; a scale
+// is lowered towards its neighbour, never raised above its own target.
 void limitNeighbours(double* row, int n, double limit)
 {
-  for (int sweep = 0; sweep < 2; ++sweep) {
-    for (int i = 1; i < 2 * n; ++i) row[i % n] = std::min(row[i % n], row[(i - 1) % n] + limit);
-    for (int i = 2 * n - 2; i >= 0; --i) row[i % n] = std::min(row[i % n], row[(i + 1) % n] + limit);
-  }
+  for (int i = 1; i < n; ++i) row[i] = std::min(row[i], row[i - 1] + limit);
+  for (int i = n - 2; i >= 0; --i) row[i] = std::min(row[i], row[i + 1] + limit);
 }
 
-// Smooths ramp scales along the deposited path: `scales` holds them in path order (revolution by
-// revolution, so the end of one revolution runs into the start of the next, as the helix does),
-// and each pass is the binomial filter 1/4, 1/2, 1/4 (the ends repeat themselves). The true height
-// of a point is measured in its frame, whose travel direction is the chord to the next point, so a
-// point stretched more than its neighbours tilts the chords on both sides of it and lowers their
-// heights, which the next iteration answers by stretching them, and the neighbour after lower: an
-// alternating pattern (neighbouring points 0.1-0.4 mm up and down, 0.5 mm apart on a branch's arm
-// next to the crotch) grows from the point-by-point fixed point. The filter removes that pattern
-// (the 1/4, 1/2, 1/4 filter maps it to zero) and any variation over fewer than a few points, which
-// a deposit cannot follow anyway; a constant stretch (an unleaning part: all 1) is left exactly.
-void smoothAlongPath(std::vector<double>& scales, int passes)
+// Smooths one ramp revolution's scales along the deposited path with passes of the binomial
+// filter 1/4, 1/2, 1/4 (the ends repeat themselves). The true height of a point is measured in its
+// frame, whose travel direction is the chord to the next point, so a point stretched more than its
+// neighbours tilts the chords on both sides of it and lowers their heights, which the next
+// iteration answers by stretching them, and the neighbour after lower: an alternating pattern
+// (neighbouring points 0.1-0.4 mm up and down, 0.5 mm apart on a branch's arm next to the crotch)
+// grows from the point-by-point fixed point. The filter removes that pattern (the 1/4, 1/2, 1/4
+// filter maps it to zero) and any variation over fewer than a few points, which a deposit cannot
+// follow anyway; a constant stretch (an unleaning part: all 1) is left exactly.
+void smoothAlongPath(double* row, int n, int passes)
 {
-  const size_t m = scales.size();
-  if (m < 3) return;
-  std::vector<double> out(m);
+  if (n < 3) return;
+  std::vector<double> out(static_cast<size_t>(n));
   for (int p = 0; p < passes; ++p) {
-    for (size_t k = 0; k < m; ++k) {
-      const double before = scales[k == 0 ? 0 : k - 1], after = scales[k + 1 == m ? k : k + 1];
-      out[k] = 0.25 * (before + 2.0 * scales[k] + after);
-    }
-    scales.swap(out);
+    for (int i = 0; i < n; ++i)
+      out[i] = 0.25 * (row[std::max(i - 1, 0)] + 2.0 * row[i] + row[std::min(i + 1, n - 1)]);
+    std::copy(out.begin(), out.end(), row);
   }
 }
 
@@ -329,16 +336,16 @@ void flattenNearlyUniform(std::vector<double>& scales, int n, double flat)
 // One step of the ramp stretch's fixed-point iteration (see RampScales). Each ramp point's target
 // scale is 1 / cos(theta) measured on `pass`, the layout built with the current scales, so that its
 // true height (nominal step x scale x cos(theta), spec §3.5) is the nominal one. Stretching a point
-// moves it along its generatrix, which turns its layer and changes theta, so the iteration is damped
-// (the scales move half-way to their targets), smoothed along the path (smoothAlongPath,
-// kSmoothPasses: on the Y tube's arms this took the rows outside the window from 130 and 146 to 25
-// and 28) and kept smooth around each revolution (limitNeighbours). Without that limit,
-// generatrices whose lean changes abruptly (a branch's arm on its tilted saddle cut) stretch one
-// side of a revolution far more than the other, the step between them turns the layer nearly
-// parallel to the generatrices, theta grows and the iteration runs away. The stretch is capped at
-// kMaxStretch (theta = 60 degrees). Stretches within kStretchFloor of 1 (the height within 0.01 %
-// of nominal) are left at 1, so a part whose layers do not lean keeps exactly the designed layout.
-// Returns the largest change of a scale.
+// moves it along its generatrix, which turns its layer and changes theta, so the iteration is
+// damped (the scales move half-way to their targets), smoothed along the revolution
+// (smoothAlongPath, kSmoothPasses: on the Y tube's arms this took the rows outside the window from
+// 130 and 146 to 25 and 28) and kept smooth along each revolution (limitNeighbours), neither across
+// the seam (see above). Without that limit, generatrices whose lean changes abruptly (a branch's
+// arm on its tilted saddle cut) stretch one side of a revolution far more than the other, the step
+// between them turns the layer nearly parallel to the generatrices, theta grows and the iteration
+// runs away. The stretch is capped at kMaxStretch (theta = 60 degrees). Stretches within
+// kStretchFloor of 1 (the height within 0.01 % of nominal) are left at 1, so a part whose layers do
+// not lean keeps exactly the designed layout. Returns the largest change of a scale.
 double stretchRamps(const SpiralResult& pass, const std::vector<double>& cosines, RampScales& scales)
 {
   constexpr double kStretchFloor = 1e-4;
@@ -367,8 +374,10 @@ double stretchRamps(const SpiralResult& pass, const std::vector<double>& cosines
   const int n = scales.n;
   double change = 0.0;
   for (auto [now, was] : {std::pair(&next.start, &scales.start), std::pair(&next.end, &scales.end)}) {
-    smoothAlongPath(*now, kSmoothPasses);
-    for (size_t r = 0; r * n < now->size(); ++r) limitNeighbours(now->data() + r * n, n, kNeighbourStretch);
+    for (size_t r = 0; r * n < now->size(); ++r) {
+      smoothAlongPath(now->data() + r * n, n, kSmoothPasses);
+      limitNeighbours(now->data() + r * n, n, kNeighbourStretch);
+    }
     flattenNearlyUniform(*now, n, kFlatStretch);
     for (size_t k = 0; k < now->size(); ++k) change = std::max(change, std::abs((*now)[k] - (*was)[k]));
   }
