@@ -19,8 +19,8 @@ struct BranchPiece {
   // Geodesic distance from its lower edge down to the upper edge of the piece it stands on (the
   // junction gap it has to bridge), mm; 0 for the piece on the substrate.
   double supportGap = 0.0;
-  double area = 0.0;          // mm^2
-  bool trunk = false;         // the part below a split (or the whole part when nothing splits)
+  double area = 0.0;   // mm^2
+  bool trunk = false;  // the part below a split (or the whole part when nothing splits)
 };
 
 // A split of one piece: the saddle of its field and where it was cut.
@@ -40,7 +40,7 @@ struct BranchSplitOptions {
   // Height of the junction gap (mm of geodesic distance); <= 0 picks half the thinnest deposit, so
   // that a branch's first ring, laid h_min to h_max above the trunk's last, still lies on the branch.
   double junctionGap = 0.0;
-  double nominalHeight = 2.0;  // h, mm
+  double nominalHeight = 2.0;    // h, mm
   double thinnestDeposit = 1.8;  // h_min, mm
   // The cuts follow the distance smoothed by one implicit heat step of time smoothing * h^2
   // (field_smoothing.h); 0 cuts the raw distance. The step only has to remove the distance's
@@ -73,10 +73,10 @@ struct BranchDecomposition {
 // branch (a connected component of what lies above) starts at saddle + g/2, where it has a loop of
 // its own. The band of height g in between, around the crotch, is the junction gap: each branch
 // records it (supportGap) and lays its first ring measured from the trunk's top, across the gap,
-// so the gap is built, not left (g is below h_min, so that ring still lies on the branch). Both cuts follow the distance smoothed at the scale of a few
-// edges: the heat method's distance wobbles from face to face on meshes with slivers and a level
-// line of it zig-zags, which a spiral started on it would repeat; the saddle is still bisected on
-// the raw distance, and reported as such.
+// so the gap is built, not left (g is below h_min, so that ring still lies on the branch). Both cuts follow
+// the distance smoothed at the scale of a few edges: the heat method's distance wobbles from face to face on
+// meshes with slivers and a level line of it zig-zags, which a spiral started on it would repeat; the saddle
+// is still bisected on the raw distance, and reported as such.
 //
 // `baseField`: the geodesic distance from `base` if already computed (one value per vertex).
 // Throws InputError when branches join again above a split (the part has a hole through it, not a

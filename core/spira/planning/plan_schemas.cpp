@@ -1,6 +1,5 @@
 #include "spira/planning/plan_schemas.h"
 
-
 #include "spira/base/error.h"
 #include "spira/base/number_text.h"
 #include "spira/path/calibration_table.h"
