@@ -4,28 +4,19 @@
 #include <atomic>
 #include <cmath>
 #include <optional>
-#include <sstream>
 
 #include <tbb/parallel_for.h>
 
 #include "loop_crossing.h"
 #include "ray_caster.h"
 #include "spira/base/error.h"
+#include "spira/base/number_text.h"
 #include "spira/base/units.h"
 #include "spira/mesh/corner_normals.h"
 
 namespace spira {
 
 namespace {
-
-std::string num(double v, int decimals)
-{
-  std::ostringstream s;
-  s.setf(std::ios::fixed);
-  s.precision(decimals);
-  s << v;
-  return s.str();
-}
 
 struct Sample {
   double z = 0.0;
@@ -101,7 +92,7 @@ struct Tracer {
     if (gap <= jump) return true;
     const double zm = 0.5 * (a.z + b.z);
     if (b.z - a.z < minDz) {
-      failure = Failure{zm, "the projected points jump " + num(gap, 2) +
+      failure = Failure{zm, "the projected points jump " + fixedText(gap, 2) +
                                 " mm across the wall, which folds back (an overhang): the surface "
                                 "it hides gets no projection"};
       return false;
@@ -265,8 +256,8 @@ EnvelopeDecomposition decomposeByEnvelopeProjection(const TriangleMesh& mesh, co
   if (first) {
     const double angle = radToDeg(
         std::remainder(options.startAngle + 2.0 * kPi * first->second / static_cast<double>(n), 2 * kPi));
-    throw InputError("envelope projection fails at z = " + num(first->first.z, 2) + " mm, angle " +
-                         num(angle, 1) + " deg: " + first->first.what + " (" + std::to_string(failing) +
+    throw InputError("envelope projection fails at z = " + fixedText(first->first.z, 2) + " mm, angle " +
+                         fixedText(angle, 1) + " deg: " + first->first.what + " (" + std::to_string(failing) +
                          " of " + std::to_string(n) + " generatrices fail)",
                      "envelope projection suits open parts without overhangs; use the iso-value strategy "
                      "(--strategy isovalue) or the geodesic one (--strategy geodesic)");

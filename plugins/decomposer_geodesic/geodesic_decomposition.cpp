@@ -14,6 +14,7 @@
 #include "length_spread.h"
 #include "merged_neighbours.h"
 #include "spira/base/error.h"
+#include "spira/base/number_text.h"
 #include "spira/field/heat_distance.h"
 #include "surface_locator.h"
 
@@ -22,14 +23,6 @@ namespace spira::geodesic {
 namespace {
 
 constexpr size_t kBatch = 32;  // generatrices between progress reports
-
-std::string num(double v, int precision = 3)
-{
-  std::ostringstream s;
-  s.precision(precision);
-  s << v;
-  return s.str();
-}
 
 double secondsSince(std::chrono::steady_clock::time_point t0)
 {
@@ -84,15 +77,6 @@ GeneratrixLine lineFromPath(const GeodesicMesh& gm, const SolvedGeneratrix& s, c
   return line;
 }
 
-std::string where(const Vec3& p)
-{
-  std::ostringstream s;
-  s.setf(std::ios::fixed);
-  s.precision(1);
-  s << "(" << p.x() << ", " << p.y() << ", " << p.z() << ")";
-  return s.str();
-}
-
 // Two neighbouring generatrices closer than 1 % of the spacing they started at (or of a bead)
 // have met. There one revolution's step from one to the other is a hundredth of its usual length,
 // so its direction, and the bead height d cos(theta) the spiral lays along it, is set by the
@@ -142,11 +126,11 @@ class MeetingNeighboursCheck {
         "two) cannot part them";
     std::ostringstream what;
     what << "neighbouring geodesic generatrices meet: " << m.pairs << " of the first " << checkedPairs
-         << " neighbouring pairs (of " << n << ") come within " << num(gap_, 2)
+         << " neighbouring pairs (of " << n << ") come within " << significantText(gap_, 2)
          << " mm of each other (1 % of their spacing at the base); the longest stretch, from the base "
-         << "points at " << where(lines_[m.first].front()) << " and "
-         << where(lines_[(m.first + 1) % n].front()) << ", is " << num(m.stretch, 3) << " mm from "
-         << where(m.from) << why;
+         << "points at " << pointText(lines_[m.first].front(), 1) << " and "
+         << pointText(lines_[(m.first + 1) % n].front(), 1) << ", is " << significantText(m.stretch, 3)
+         << " mm from " << pointText(m.from, 1) << why;
     throw InputError(what.str(),
                      "use --strategy isovalue: its generatrices follow a field's gradient and do not meet");
   }
@@ -290,12 +274,12 @@ GeodesicDecomposition decomposeByGeodesics(const TriangleMesh& mesh, const Bound
     out.warnings.push_back("coverage (thesis Eq. 3.9): " + std::to_string(coverage.fillIns) +
                            " fill-in generatrices were inserted in " + std::to_string(coverage.rounds) +
                            " round(s) where neighbouring geodesics left the surface uncovered by more than " +
-                           num(options.coverageTolerance) + " mm");
+                           significantText(options.coverageTolerance, 3) + " mm");
   if (!coverage.converged)
-    out.warnings.push_back("coverage error " + num(coverage.maxError) + " mm remains between generatrices " +
-                           std::to_string(coverage.worstPair) + " and " +
-                           std::to_string((coverage.worstPair + 1) % coverage.lines.size()) + " (tolerance " +
-                           num(options.coverageTolerance) +
+    out.warnings.push_back("coverage error " + significantText(coverage.maxError, 3) +
+                           " mm remains between generatrices " + std::to_string(coverage.worstPair) +
+                           " and " + std::to_string((coverage.worstPair + 1) % coverage.lines.size()) +
+                           " (tolerance " + significantText(options.coverageTolerance, 3) +
                            " mm): raise --points-per-rev or --fill-rounds, or use --strategy isovalue");
 
   Generatrices& g = out.generatrices;

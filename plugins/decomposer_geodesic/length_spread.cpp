@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "spira/base/error.h"
+#include "spira/base/number_text.h"
 
 namespace spira::geodesic {
 
@@ -57,24 +58,6 @@ std::vector<double> edgeDistances(const GeodesicMesh& gm, const std::vector<std:
   return dist;
 }
 
-std::string where(const Vec3& p)
-{
-  std::ostringstream s;
-  s.setf(std::ios::fixed);
-  s.precision(1);
-  s << "(" << p.x() << ", " << p.y() << ", " << p.z() << ")";
-  return s.str();
-}
-
-std::string mm(double v, int precision)
-{
-  std::ostringstream s;
-  s.setf(std::ios::fixed);
-  s.precision(precision);
-  s << v;
-  return s.str();
-}
-
 }  // namespace
 
 std::vector<LengthBounds> boundGeneratrixLengths(const GeodesicMesh& gm, const std::vector<BasePoint>& bases,
@@ -117,14 +100,15 @@ void requireLengthsFitWindow(const std::vector<LengthBounds>& lengths, const std
   const bool exact = lengths[longest].lower == lengths[longest].upper;
   const std::string target = open ? "upper edge" : "closure point";
   std::ostringstream what;
-  what << "the geodesic generatrices cannot be laid by one spiral in the window " << mm(window.hMin, 2)
-       << " .. " << mm(window.hMax, 2) << " mm: the shortest path on the surface to the " << target << " is "
-       << (exact ? "" : "at least ") << mm(lengths[longest].lower, 1) << " mm from the base point at "
-       << where(bases[longest].point.position) << " but " << (exact ? "" : "at most ")
-       << mm(lengths[shortest].upper, 1) << " mm from " << where(bases[shortest].point.position)
+  what << "the geodesic generatrices cannot be laid by one spiral in the window " << fixedText(window.hMin, 2)
+       << " .. " << fixedText(window.hMax, 2) << " mm: the shortest path on the surface to the " << target
+       << " is " << (exact ? "" : "at least ") << fixedText(lengths[longest].lower, 1)
+       << " mm from the base point at " << pointText(bases[longest].point.position, 1) << " but "
+       << (exact ? "" : "at most ") << fixedText(lengths[shortest].upper, 1) << " mm from "
+       << pointText(bases[shortest].point.position, 1)
        << ", so layers laid at equal fractions of them differ in thickness by a factor of "
-       << (exact ? "" : "at least ") << mm(ratio, 2)
-       << ", more than h_max / h_min = " << mm(window.lengthRatio(), 2)
+       << (exact ? "" : "at least ") << fixedText(ratio, 2)
+       << ", more than h_max / h_min = " << fixedText(window.lengthRatio(), 2)
        << " (thesis Eq. 3.6; the wall bends or leans so that shortest paths "
        << "take very different routes)";
   throw InputError(

@@ -16,9 +16,9 @@ inline double angleOf(int i, int n)
   return 2.0 * kPi * i / n;
 }
 
-// Vertical lines on the cylinder of radius R about z, generatrix i at angle 2 pi i / n, from z = 0
-// to z = length(i), with `points` evenly spaced points each.
-inline Generatrices cylinderLines(double R, int n, const std::function<double(int)>& length, int points)
+// Generatrix i of n at angle a = 2 pi i / n: `points` points position(i, a, k), k = 0 .. points - 1,
+// each with the radial unit normal (the surface is upright wherever it is).
+inline Generatrices radialLines(int n, int points, const std::function<Vec3(int, double, int)>& position)
 {
   Generatrices g;
   for (int i = 0; i < n; ++i) {
@@ -27,13 +27,22 @@ inline Generatrices cylinderLines(double R, int n, const std::function<double(in
     Polyline line;
     std::vector<Vec3> normals;
     for (int k = 0; k < points; ++k) {
-      line.push_back(R * radial + Vec3(0, 0, length(i) * k / (points - 1)));
+      line.push_back(position(i, a, k));
       normals.push_back(radial);
     }
     g.lines.push_back(line);
     g.normals.push_back(normals);
   }
   return g;
+}
+
+// Vertical lines on the cylinder of radius R about z, generatrix i at angle 2 pi i / n, from z = 0
+// to z = length(i), with `points` evenly spaced points each.
+inline Generatrices cylinderLines(double R, int n, const std::function<double(int)>& length, int points)
+{
+  return radialLines(n, points, [&](int i, double a, int k) {
+    return Vec3(R * std::cos(a), R * std::sin(a), length(i) * k / (points - 1));
+  });
 }
 
 inline Generatrices cylinder(double R, double H, int n, int points)

@@ -17,22 +17,10 @@ namespace {
 // 1 / cos(18.4 deg) = 1.054 (spec §3.5).
 Generatrices vNotchedCylinder()
 {
-  const int n = 120;
-  Generatrices g;
-  for (int i = 0; i < n; ++i) {
-    const double a = angleOf(i, n);
+  return radialLines(120, 200, [](int, double a, int k) {
     const double z0 = 4.0 * std::max(0.0, 1.0 - std::abs(a - kPi));
-    const Vec3 radial(std::cos(a), std::sin(a), 0.0);
-    Polyline line;
-    std::vector<Vec3> normals;
-    for (int k = 0; k < 200; ++k) {
-      line.push_back(12.0 * radial + Vec3(0, 0, z0 + (100.0 - z0) * k / 199.0));
-      normals.push_back(radial);
-    }
-    g.lines.push_back(line);
-    g.normals.push_back(normals);
-  }
-  return g;
+    return Vec3(12.0 * std::cos(a), 12.0 * std::sin(a), z0 + (100.0 - z0) * k / 199.0);
+  });
 }
 
 // The unstretched ramps rise linearly with u around a revolution (second difference 0) and the

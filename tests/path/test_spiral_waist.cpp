@@ -23,23 +23,12 @@ constexpr double kLeanDegrees = 19.0;
 // degrees of vertical and the ramps' steps, which follow the wall, lean on it by up to 19 degrees.
 Generatrices waistedTube()
 {
-  const int n = 360;
   const double slope = std::tan(kLeanDegrees * kPi / 180.0);
-  Generatrices g;
-  for (int i = 0; i < n; ++i) {
-    const double a = angleOf(i, n);
-    const Vec3 radial(std::cos(a), std::sin(a), 0.0);
-    Polyline line;
-    std::vector<Vec3> normals;
-    for (int k = 0; k <= 710; ++k) {
-      const double z = 0.1 * k;  // the bends are vertices
-      line.push_back((kRadius - slope * std::clamp(z - kBend, 0.0, kNeck - kBend)) * radial + Vec3(0, 0, z));
-      normals.push_back(radial);
-    }
-    g.lines.push_back(line);
-    g.normals.push_back(normals);
-  }
-  return g;
+  return radialLines(360, 711, [slope](int, double a, int k) {
+    const double z = 0.1 * k;  // the bends are vertices
+    const double r = kRadius - slope * std::clamp(z - kBend, 0.0, kNeck - kBend);
+    return Vec3(r * std::cos(a), r * std::sin(a), z);
+  });
 }
 
 // The fourth full start-up ramp climbs from z = 7.2 to 8.8 mm around its revolution, into the

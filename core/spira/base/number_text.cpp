@@ -34,4 +34,10 @@ std::string significantText(double x, int digits)
   return o.str();
 }
 
+std::string pointText(const Vec3& p, int digits)
+{
+  return "(" + fixedText(p.x(), digits) + ", " + fixedText(p.y(), digits) + ", " + fixedText(p.z(), digits) +
+         ")";
+}
+
 }  // namespace spira

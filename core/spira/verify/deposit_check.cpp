@@ -254,14 +254,9 @@ DepositDefect classify(double h, const DepositCheckSettings& s, bool* ok)
   return DepositDefect::Unsupported;
 }
 
-std::string at(const Vec3& p)
-{
-  return "(" + fixedText(p.x(), 1) + ", " + fixedText(p.y(), 1) + ", " + fixedText(p.z(), 1) + ")";
-}
-
 std::string describe(const DepositFlag& f, double searchDepth)
 {
-  const std::string where = "point " + std::to_string(f.point) + " at " + at(f.position) + " mm";
+  const std::string where = "point " + std::to_string(f.point) + " at " + pointText(f.position, 1) + " mm";
   switch (f.kind) {
     case DepositDefect::BelowDeposit:
       return where + " lies " + fixedText(-f.height, 2) + " mm under material already laid";
@@ -315,7 +310,7 @@ std::string DepositCheckReport::summary() const
   if (coverageChecked && uncoveredArea > 0.0)
     o << sep << fixedText(100.0 * uncoveredFraction(), 1) << " % of the surface ("
       << fixedText(uncoveredArea, 0) << " mm^2) is not covered, up to " << fixedText(largestGap, 1)
-      << " mm from the path at " << at(largestGapAt) << " mm";
+      << " mm from the path at " << pointText(largestGapAt, 1) << " mm";
   return o.str();
 }
 
