@@ -81,7 +81,8 @@ TEST(SpiralClosed, HemisphereConvergesToThePoleOnce)
   EXPECT_LT(r.report.heightMax, 1.1);
 }
 
-// Heights recomputed from positions and b: d is the arc along the meridian, R (lat - lat_below).
+// Heights recomputed from positions and b: d is the chord along the meridian, 2 R sin((lat -
+// lat_below) / 2).
 TEST(SpiralClosed, HeightsRecomputedFromPositionsAgree)
 {
   NullProgress progress;
@@ -96,7 +97,7 @@ TEST(SpiralClosed, HeightsRecomputedFromPositionsAgree)
     const size_t prev = q - kN;
     const Vec3 below = q < static_cast<size_t>(kN) ? g.lines[p.generatrix].front() : t.points[prev].position;
     const Vec3 v = p.position - below;
-    const double d = kR * (lat(p.position) - lat(below));
+    const double d = 2.0 * kR * std::sin(0.5 * (lat(p.position) - lat(below)));
     EXPECT_NEAR(p.height, d * v.dot(p.build) / v.norm(), 2e-5 * d) << q;
     // b points up the meridian, toward the pole.
     const Vec3 towardPole = (Vec3(0, 0, kR) - p.position).normalized();

@@ -118,13 +118,18 @@ Heights measureHeights(const std::vector<PathPoint>& pts, const std::vector<int>
     }
     auto crossings = [&](const V3& centre, double radius) {
       grid.query(centre, radius, [&](size_t j) {
-        const V3& a = pts[j].p;
-        const V3& c = pts[j + 1].p;
+        // A point stands for the bead half a step either side of it, a run's end points too.
+        V3 a = pts[j].p, c = pts[j + 1].p;
+        const V3 cap = (c - a) * 0.5;
+        if (j == 0 || !sameRun(run, j - 1, j)) a = a - cap;
+        if (j + 2 >= n || !sameRun(run, j + 1, j + 2)) c = c + cap;
         const double sa = tau.dot(a - p), sc = tau.dot(c - p);
         if (sa * sc > 0 || sa == sc) return;
         const V3 x = a + (c - a) * (sa / (sa - sc));
         if (std::abs(nu.dot(x - p)) > half) return;
-        const double t = b.dot(p - x);
+        // A spiral's seam climbs steeply: it is measured at its end nearer the plane.
+        const bool seam = std::abs(b.dot(c - a)) > 0.25 * std::abs(sc - sa);
+        const double t = b.dot(p - (seam ? (std::abs(sa) < std::abs(sc) ? a : c) : x));
         if (t >= lowest) best = std::min(best, t);
       });
     };

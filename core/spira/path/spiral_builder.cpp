@@ -34,9 +34,14 @@ struct Layout {
 // largest) over-stretches the revolutions that do not lean, and the surplus climb, different from
 // one generatrix to the next, leaves a step in the layer that the modulated phase carries up (spec
 // §3.2-3.3: the start-up must remove a height step, not make one). See stretchRamps().
+// The modulated revolutions get the same per-point stretch, normalised along each generatrix so
+// that they still share its modulated length: a generatrix whose layers lean on some revolutions
+// (an arm's first layers above its saddle cut) lays longer steps there and shorter ones where they
+// do not, every layer of it at the one true height its length allows.
 struct RampScales {
   int n = 0;
-  std::vector<double> start, end;  // [r * n + i]: start-up / termination revolution r, generatrix i
+  int layers = 0;                       // modulated revolutions `mod` was measured on
+  std::vector<double> start, end, mod;  // [r * n + i]: revolution r of the phase, generatrix i
   RampScales(int points, int startRevs, int endRevs)
       : n(points),
         start(static_cast<size_t>(startRevs) * points, 1.0),
@@ -45,6 +50,16 @@ struct RampScales {
   }
   double startAt(int r, int i) const { return start[static_cast<size_t>(r) * n + i]; }
   double endAt(int r, int i) const { return end[static_cast<size_t>(r) * n + i]; }
+  // Modulated revolution m's share of generatrix i's modulated length, nLayers shares in all.
+  std::vector<double> modShares(int i, int nLayers) const
+  {
+    std::vector<double> share(static_cast<size_t>(nLayers), 1.0);
+    if (layers != nLayers) return share;
+    double sum = 0.0;
+    for (int m = 0; m < nLayers; ++m) sum += share[m] = mod[static_cast<size_t>(m) * n + i];
+    for (double& x : share) x *= nLayers / sum;
+    return share;
+  }
 };
 
 // Stretched length of the start-up and of the termination on generatrix i.
@@ -148,11 +163,16 @@ Layout layOut(const std::vector<double>& lengths, const SpiralSettings& s, const
   for (int i = 0; i < n; ++i) {
     const double u = static_cast<double>(i) / (n - 1);
     const double d = modLen[i] / nLayers;
+    const std::vector<double> share = scale.modShares(i, nLayers);
     int k = 0;
     double acc = 0.0;
     for (int r = 0; r < report.nStartupRevolutions; ++r, ++k)
       lay.s[k * n + i] = acc += prof.startStep(r, u) * scale.startAt(r, i);
-    for (int m = 1; m <= nLayers; ++m, ++k) lay.s[k * n + i] = acc = startLen[i] + m * d;
+    double climbed = 0.0;
+    for (int m = 1; m <= nLayers; ++m, ++k) {
+      climbed += share[m - 1];
+      lay.s[k * n + i] = acc = startLen[i] + (m == nLayers ? modLen[i] : climbed * d);
+    }
     for (int r = 0; r < report.nEndRevolutions; ++r, ++k)
       lay.s[k * n + i] = acc += prof.endStep(r, u) * scale.endAt(r, i);
     lay.s[(lay.revolutions - 1) * n + i] = lengths[i];  // exactly on the edge, whatever the rounding
@@ -251,7 +271,7 @@ SpiralResult buildPass(const Generatrices& g, const std::vector<ArcLengthPolylin
     c.tangent = last.tangent;
     c.build = last.build;
   }
-  computeDepositHeights(path, steps, arcSteps);
+  computeDepositHeights(path, steps);
   cosines.assign(count, 1.0);
   for (size_t q = 0; q < count; ++q)
     if (arcSteps[q] > 0.0) cosines[q] = path.points[q].height / arcSteps[q];
@@ -358,22 +378,28 @@ double stretchRamps(const SpiralResult& pass, const std::vector<double>& cosines
   const auto& pts = pass.trajectory.points;
   const size_t last = rep.collapsedRevolutions > 0 ? pts.size() - 1 : pts.size();
   const int endFirst = rep.nStartupRevolutions + rep.nLayers;
+  const int n = scales.n;
+  if (scales.layers != rep.nLayers) {
+    scales.layers = rep.nLayers;
+    scales.mod.assign(static_cast<size_t>(rep.nLayers) * n, 1.0);
+  }
   RampScales next = scales;
   for (size_t q = 0; q < last; ++q) {
     const TrajectoryPoint& p = pts[q];
+    if (cosines[q] <= 0.0) continue;
     const SpiralPhase phase = phaseOfRevolution(p.revolution, rep);
-    if (phase == SpiralPhase::Modulated || cosines[q] <= 0.0) continue;
-    const bool start = phase == SpiralPhase::StartUp;
-    const int r = start ? p.revolution : p.revolution - endFirst;
-    const size_t at = static_cast<size_t>(r) * scales.n + p.generatrix;
+    const bool start = phase == SpiralPhase::StartUp, mod = phase == SpiralPhase::Modulated;
+    const int r = p.revolution - (start ? 0 : mod ? rep.nStartupRevolutions : endFirst);
+    const size_t at = static_cast<size_t>(r) * n + p.generatrix;
     double stretch = std::min(1.0 / cosines[q], kMaxStretch);
     if (stretch <= 1.0 + kStretchFloor) stretch = 1.0;
-    const double old = (start ? scales.start : scales.end)[at];
-    (start ? next.start : next.end)[at] = old + kRelax * (stretch - old);
+    std::vector<double>& to = start ? next.start : mod ? next.mod : next.end;
+    const double old = (start ? scales.start : mod ? scales.mod : scales.end)[at];
+    to[at] = old + kRelax * (stretch - old);
   }
-  const int n = scales.n;
   double change = 0.0;
-  for (auto [now, was] : {std::pair(&next.start, &scales.start), std::pair(&next.end, &scales.end)}) {
+  for (auto [now, was] : {std::pair(&next.start, &scales.start), std::pair(&next.end, &scales.end),
+                          std::pair(&next.mod, &scales.mod)}) {
     for (size_t r = 0; r * n < now->size(); ++r) {
       smoothAlongPath(now->data() + r * n, n, kSmoothPasses);
       limitNeighbours(now->data() + r * n, n, kNeighbourStretch);

@@ -27,7 +27,8 @@ namespace spira {
 // Closed parts end on the closure point once: the trailing revolutions shorter than
 // SpiralSettings::minRevolutionLength (the last one at least, which is the closure point repeated
 // n times) are replaced by that single point.
-// Each point gets its frame (spiral_frames.h), its true deposit height h = d cos(theta) and the
+// Each point gets its frame (spiral_frames.h), its true deposit height h = d cos(theta) (d the
+// chord of its step, computeDepositHeights) and the
 // revolution and generatrix it belongs to; the report checks feasibility (Eq. 3.6 and 3.15) on
 // every point. Where the layers lean on the generatrices (cos(theta) < 1 - 1e-4 on a ramp point: a
 // tilted or non-planar base such as a branch's saddle cut, a non-planar upper edge, a converging

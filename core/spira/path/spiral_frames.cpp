@@ -54,13 +54,9 @@ bool orientBuildDirection(Trajectory& path, const std::vector<Vec3>& steps)
   return true;
 }
 
-void computeDepositHeights(Trajectory& path, const std::vector<Vec3>& steps,
-                           const std::vector<double>& arcSteps)
+void computeDepositHeights(Trajectory& path, const std::vector<Vec3>& steps)
 {
-  for (size_t q = 0; q < path.points.size(); ++q) {
-    const double len = steps[q].norm();
-    path.points[q].height = len > kTiny ? arcSteps[q] * steps[q].dot(path.points[q].build) / len : 0.0;
-  }
+  for (size_t q = 0; q < path.points.size(); ++q) path.points[q].height = steps[q].dot(path.points[q].build);
 }
 
 }  // namespace spira

@@ -27,10 +27,12 @@ void computeFrames(Trajectory& path);
 // it did.
 bool orientBuildDirection(Trajectory& path, const std::vector<Vec3>& steps);
 
-// True deposit heights, thesis Eq. 3.5 with d_i in place of the misprinted d_1:
-// h = d cos(theta), d = arcSteps[q] the arc length stepped along the generatrix and theta the
-// angle between steps[q] and b. A point that did not move along its generatrix gets 0.
-void computeDepositHeights(Trajectory& path, const std::vector<Vec3>& steps,
-                           const std::vector<double>& arcSteps);
+// True deposit heights, thesis Eq. 3.5 with d_i in place of the misprinted d_1: h = d cos(theta),
+// theta the angle between steps[q] and b, with d the length of the chord steps[q], i.e.
+// h = steps[q] . b. The thesis's d is the arc stepped along the generatrix; on its straight
+// generatrices the two agree, but across a bend the arc is longer than what lies between the two
+// beads (a 1.8 mm step across a tube wall's 19 degree bend: arc 1.828 mm, chord 1.799 mm), and
+// the chord is what the deposit check measures (docs/deposit-check.md).
+void computeDepositHeights(Trajectory& path, const std::vector<Vec3>& steps);
 
 }  // namespace spira

@@ -46,7 +46,8 @@ struct SpiralReport {
   // the next: d_0 - climb (StartupProfile); c / n for a uniform helix, mm.
   double seamStep = 0.0;
 
-  // True deposit heights h = d cos(theta) over the modulated phase (the thesis's H_depot), mm.
+  // True deposit heights h = d cos(theta), d the chord of the step, over the modulated phase (the
+  // thesis's H_depot), mm.
   double heightMin = 0.0, heightMax = 0.0, heightMean = 0.0;
   // The same over the start-up and termination ramps, which use the whole window to climb from the
   // substrate and level the top (0 when the spiral has no ramp point).

@@ -6,6 +6,7 @@
 #include <limits>
 #include <map>
 #include <sstream>
+#include <utility>
 
 #include <tbb/parallel_for.h>
 
@@ -172,7 +173,7 @@ class HeightProbe {
   // bead of the wall; kInf where it does not.
   double crossing(const Column& c, size_t j) const
   {
-    const Vec3 &a = L_.points[j], &e = L_.points[j + 1];
+    const auto [a, e] = beadSpan(j);
     const double da = c.tau.dot(a - c.p), de = c.tau.dot(e - c.p);
     if ((da > 0.0 && de > 0.0) || (da < 0.0 && de < 0.0) || da == de) return kInf;
     const Vec3 x = a + (da / (da - de)) * (e - a);
@@ -183,6 +184,19 @@ class HeightProbe {
     if (std::abs(c.b.dot(e - a)) > 0.25 * std::abs(da - de))
       return c.b.dot(c.p - (std::abs(da) <= std::abs(de) ? a : e));
     return c.b.dot(c.p - x);
+  }
+
+  // Segment j, reaching half of itself further where it starts or ends its run: each point stands
+  // for the bead half a step either side of it, the run's end points too, so the plane across a
+  // point laid a hair behind the run's first point (a spiral's second revolution over its arc
+  // start) still meets the bead there.
+  std::pair<Vec3, Vec3> beadSpan(size_t j) const
+  {
+    Vec3 a = L_.points[j], e = L_.points[j + 1];
+    const Vec3 cap = 0.5 * (e - a);
+    if (j == 0 || L_.run[j - 1] != L_.run[j]) a -= cap;
+    if (j + 2 >= L_.points.size() || L_.run[j + 2] != L_.run[j + 1]) e += cap;
+    return {a, e};
   }
 
   // Depth of the segment's closest approach to the column, when within half a bead of it.
