@@ -135,6 +135,19 @@ TEST(DepositCheck, MissingBandOfCoverage)
   EXPECT_FALSE(gap.feasible());
 }
 
+// Ring 1's first point a tenth of a step behind ring 0's first (the arc start): it rests on ring
+// 0 (2 mm), not on the substrate (4 mm), and ring 0's last point, a step before the arc start,
+// still stands on the substrate.
+TEST(DepositCheck, SecondRingStartingAHairBehindTheArcStartRestsOnIt)
+{
+  auto pts = stackedRings(3);
+  const double back = 0.1 * 2 * kPi / kPerRing;
+  pts[indexOf(1, 0)].p = V3(kRadius * std::cos(-back), kRadius * std::sin(-back), 2 * kH);
+  const CheckResult r = checkDeposit(pts, CheckSettings{});
+  EXPECT_EQ(r.flagged(), 0u) << r.summary();
+  EXPECT_NEAR(r.heightMax, kH, 1e-9);
+}
+
 TEST(DepositCheck, SubstrateBelowTheFirstRing)
 {
   auto pts = stackedRings(2);

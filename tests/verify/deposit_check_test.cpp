@@ -129,6 +129,20 @@ TEST(DepositCheck, RingFarAboveEverythingHasNothingWithinTheSearchDepth)
       << r.summary();
 }
 
+// The second ring's first point laid a twentieth of a step behind the arc start, as a seam's
+// rounding leaves it: it rests on the first ring's start (2 mm), not on the substrate (3.5 mm),
+// and the first ring's last point, a step before the arc start, still stands on the substrate.
+TEST(DepositCheck, SecondRingStartingAHairBehindTheArcStartRestsOnIt)
+{
+  Trajectory t = cylinderSpiral(3);
+  TrajectoryPoint& p = t.points[kPointsPerRing];
+  p.position -= 0.05 * (2.0 * kPi * kRadius / kPointsPerRing) * p.tangent;
+  const DepositCheckReport r = check(t);
+  EXPECT_TRUE(r.flags.empty()) << r.summary();
+  EXPECT_NEAR(r.heightMax, 2.5, 0.005);  // the first ring's last point, 1.5 + 359 / 360
+  EXPECT_NEAR(r.heightMin, 1.5, 1e-6);
+}
+
 TEST(DepositCheck, PointPushedUnderThePreviousRingLiesBelowTheDeposit)
 {
   const int ring = 5, at = 180;
