@@ -9,6 +9,7 @@
 #include "spira/base/progress.h"
 #include "spira/path/feasibility.h"
 #include "spira/path/spiral_builder.h"
+#include "spiral_window.h"
 
 using namespace spira;
 
@@ -30,10 +31,7 @@ TEST(SpiralOpenPart, ThesisTable33Arithmetic)
   const double ramps = test::helixRampLength(2.0, 0.5 * (modulated(0) + modulated(n - 1)) / 84.0, n);
   const Generatrices g = test::cylinderLines(
       60.0, n, [&](int i) { return modulated(i) + ramps; }, 200);
-  SpiralSettings s;
-  s.h = 2.0;
-  s.hMin = 1.8;
-  s.hMax = 2.2;
+  const SpiralSettings s = test::thesisWindow();
   NullProgress progress;
   const SpiralResult r = buildSpiral(g, s, progress);
   const SpiralReport& rep = r.report;

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "path/analytic_generatrices.h"
+#include "path/spiral_window.h"
 #include "spira/base/progress.h"
 #include "spira/path/spiral_builder.h"
 
@@ -33,10 +34,7 @@ Generatrices vNotchedCylinder()
 TEST(SpiralStretch, StartUpOnALeaningBaseRisesWithoutAlternating)
 {
   const Generatrices g = vNotchedCylinder();
-  SpiralSettings s;
-  s.h = 2.0;
-  s.hMin = 1.8;
-  s.hMax = 2.2;
+  const SpiralSettings s = test::thesisWindow();
   NullProgress progress;
   const SpiralResult r = buildSpiral(g, s, progress);
   const auto& t = r.trajectory.points;

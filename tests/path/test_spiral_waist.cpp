@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "path/analytic_generatrices.h"
+#include "path/spiral_window.h"
 #include "spira/base/progress.h"
 #include "spira/path/spiral_builder.h"
 #include "spira/verify/deposit_check.h"
@@ -41,10 +42,7 @@ Generatrices waistedTube()
 TEST(SpiralWaist, StartUpIntoAWaistNeitherDipsNorLeavesTheWindowAtItsSeams)
 {
   const Generatrices g = waistedTube();
-  SpiralSettings s;
-  s.h = 2.0;
-  s.hMin = 1.8;
-  s.hMax = 2.2;
+  const SpiralSettings s = test::thesisWindow();
   NullProgress progress;
   const SpiralResult r = buildSpiral(g, s, progress);
   ASSERT_EQ(r.report.nStartupRevolutions, 6);

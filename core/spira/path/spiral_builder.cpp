@@ -9,6 +9,7 @@
 #include "spira/path/arc_length_polyline.h"
 #include "spira/path/feasibility.h"
 #include "spira/path/layer_count.h"
+#include "spira/path/seam_placement.h"
 #include "spira/path/spiral_frames.h"
 #include "spira/path/spiral_input.h"
 #include "spira/path/startup_profile.h"
@@ -419,7 +420,9 @@ SpiralResult buildSpiral(const Generatrices& generatrices, const SpiralSettings&
   validateSpiralSettings(settings);
   progress.report(0.0, "spiral");
   const PreparedGeneratrices prep = prepareGeneratrices(generatrices, settings);
-  const Generatrices& g = prep.generatrices();
+  const int seam = leastLeaningSeam(prep.generatrices(), (prof.startRevolutions() + 1) * settings.h);
+  const Generatrices reindexed = seam != 0 ? startingAt(prep.generatrices(), seam) : Generatrices{};
+  const Generatrices& g = seam != 0 ? reindexed : prep.generatrices();
   const int n = static_cast<int>(g.lines.size());
 
   std::vector<ArcLengthPolyline> arcs;
@@ -457,6 +460,9 @@ SpiralResult buildSpiral(const Generatrices& generatrices, const SpiralSettings&
   }
   if (stretched && best.report.violations.size() < result.report.violations.size()) result = std::move(best);
   result.report.normalsEstimated = prep.normalsEstimated();
+  // Points and violations keep the decomposer's generatrix numbers.
+  for (TrajectoryPoint& p : result.trajectory.points) p.generatrix = (p.generatrix + seam) % n;
+  for (HeightViolation& v : result.report.violations) v.generatrix = (v.generatrix + seam) % n;
   progress.report(1.0, "spiral");
   return result;
 }
