@@ -12,9 +12,9 @@ namespace spira {
 // seam is therefore put on the generatrix that leans least along the travel where the ramps lie:
 // over its first `reach` mm and, on an open part, its last.
 //
-// `g` has its normals (as prepareGeneratrices leaves them). Returns the generatrix to start from: 0 unless
-// another leans less by more than `margin` (the sine of the lean), so a part whose generatrices do not lean
-// along the travel keeps its seam.
+// `g` has its normals (as prepareGeneratrices leaves them). Returns the generatrix to start from:
+// 0 unless another leans less by more than `margin` (the sine of the lean), so a part whose
+// generatrices do not lean along the travel keeps its seam.
 int leastLeaningSeam(const Generatrices& g, double reach, double margin = 0.02);
 
 // The same generatrices, numbered from `first` on: line k of the result is line (first + k) % n.

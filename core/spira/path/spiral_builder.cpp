@@ -34,16 +34,16 @@ struct Layout {
 // revolutions next to the leaning edge and fades away from it, so one factor per generatrix (the
 // largest) over-stretches the revolutions that do not lean, and the surplus climb, different from
 // one generatrix to the next, leaves a step in the layer that the modulated phase carries up (spec
-// §3.2-3.3: the start-up must remove a height step, not make one). See stretchRamps().
+// §3.2-3.3: the start-up must remove a height step, not make one). See stretchSteps().
 // The modulated revolutions get the same per-point stretch, normalised along each generatrix so
 // that they still share its modulated length: a generatrix whose layers lean on some revolutions
 // (an arm's first layers above its saddle cut) lays longer steps there and shorter ones where they
 // do not, every layer of it at the one true height its length allows.
-struct RampScales {
+struct StepScales {
   int n = 0;
   int layers = 0;                       // modulated revolutions `mod` was measured on
   std::vector<double> start, end, mod;  // [r * n + i]: revolution r of the phase, generatrix i
-  RampScales(int points, int startRevs, int endRevs)
+  StepScales(int points, int startRevs, int endRevs)
       : n(points),
         start(static_cast<size_t>(startRevs) * points, 1.0),
         end(static_cast<size_t>(endRevs) * points, 1.0)
@@ -64,14 +64,14 @@ struct RampScales {
 };
 
 // Stretched length of the start-up and of the termination on generatrix i.
-double startLength(const StartupProfile& p, const RampScales& sc, int i, double u)
+double startLength(const StartupProfile& p, const StepScales& sc, int i, double u)
 {
   double sum = 0.0;
   for (int r = 0; r < p.startRevolutions(); ++r) sum += p.startStep(r, u) * sc.startAt(r, i);
   return sum;
 }
 
-double endLength(const StartupProfile& p, const RampScales& sc, int i, double u)
+double endLength(const StartupProfile& p, const StepScales& sc, int i, double u)
 {
   double sum = 0.0;
   for (int r = 0; r < p.endRevolutions(); ++r) sum += p.endStep(r, u) * sc.endAt(r, i);
@@ -93,8 +93,8 @@ void throwTooShort(size_t i, double length, double ramps, double hMin)
 // which depends on the layer count, which depends on the length the ramps take. For a given count
 // c solves c n_layer = (l_0(c) + l_{n-1}(c)) / 2, monotone in c (bisection over the window); the
 // count is then recomputed, until both agree (a few rounds at most).
-// `scale` stretches the ramp steps of each generatrix (see RampScales).
-Layout layOut(const std::vector<double>& lengths, const SpiralSettings& s, const RampScales& scale,
+// `scale` stretches the ramp steps of each generatrix (see StepScales).
+Layout layOut(const std::vector<double>& lengths, const SpiralSettings& s, const StepScales& scale,
               StartupProfile& prof, SpiralReport& report)
 {
   const int n = static_cast<int>(lengths.size());
@@ -198,7 +198,7 @@ int trailingDegenerate(const Trajectory& path, int n, int revolutions, double mi
 // One layout and sampling of the spiral with the given ramp scales.
 SpiralResult buildPass(const Generatrices& g, const std::vector<ArcLengthPolyline>& arcs,
                        const std::vector<double>& lengths, const SpiralSettings& settings,
-                       const RampScales& scales, std::vector<double>& cosines, Progress& progress)
+                       const StepScales& scales, std::vector<double>& cosines, Progress& progress)
 {
   const int n = static_cast<int>(g.lines.size());
   StartupProfile prof(settings.h, settings.hMin, settings.hMax);
@@ -354,7 +354,7 @@ void flattenNearlyUniform(std::vector<double>& scales, int n, double flat)
   }
 }
 
-// One step of the ramp stretch's fixed-point iteration (see RampScales). Each ramp point's target
+// One step of the ramp stretch's fixed-point iteration (see StepScales). Each ramp point's target
 // scale is 1 / cos(theta) measured on `pass`, the layout built with the current scales, so that its
 // true height (nominal step x scale x cos(theta), spec §3.5) is the nominal one. Stretching a point
 // moves it along its generatrix, which turns its layer and changes theta, so the iteration is
@@ -367,7 +367,7 @@ void flattenNearlyUniform(std::vector<double>& scales, int n, double flat)
 // runs away. The stretch is capped at kMaxStretch (theta = 60 degrees). Stretches within
 // kStretchFloor of 1 (the height within 0.01 % of nominal) are left at 1, so a part whose layers do
 // not lean keeps exactly the designed layout. Returns the largest change of a scale.
-double stretchRamps(const SpiralResult& pass, const std::vector<double>& cosines, RampScales& scales)
+double stretchSteps(const SpiralResult& pass, const std::vector<double>& cosines, StepScales& scales)
 {
   constexpr double kStretchFloor = 1e-4;
   constexpr double kRelax = 0.5;
@@ -384,7 +384,7 @@ double stretchRamps(const SpiralResult& pass, const std::vector<double>& cosines
     scales.layers = rep.nLayers;
     scales.mod.assign(static_cast<size_t>(rep.nLayers) * n, 1.0);
   }
-  RampScales next = scales;
+  StepScales next = scales;
   for (size_t q = 0; q < last; ++q) {
     const TrajectoryPoint& p = pts[q];
     if (cosines[q] <= 0.0) continue;
@@ -440,13 +440,13 @@ SpiralResult buildSpiral(const Generatrices& generatrices, const SpiralSettings&
   constexpr int kMaxPasses = 12;
   constexpr double kSettled = 1e-4;
   const int rampRevs = prof.startRevolutions();
-  RampScales scales(n, rampRevs, rampRevs);
+  StepScales scales(n, rampRevs, rampRevs);
   std::vector<double> cosines;
   SpiralResult result = buildPass(g, arcs, lengths, settings, scales, cosines, progress);
   SpiralResult best;
   bool stretched = false;
   for (int pass = 1; pass < kMaxPasses; ++pass) {
-    if (stretchRamps(result, cosines, scales) <= kSettled) break;
+    if (stretchSteps(result, cosines, scales) <= kSettled) break;
     SpiralResult next;
     try {
       next = buildPass(g, arcs, lengths, settings, scales, cosines, progress);

@@ -28,15 +28,17 @@ namespace spira {
 // SpiralSettings::minRevolutionLength (the last one at least, which is the closure point repeated
 // n times) are replaced by that single point.
 // Each point gets its frame (spiral_frames.h), its true deposit height h = d cos(theta) (d the
-// chord of its step, computeDepositHeights) and the
-// revolution and generatrix it belongs to; the report checks feasibility (Eq. 3.6 and 3.15) on
-// every point. Where the layers lean on the generatrices (cos(theta) < 1 - 1e-4 on a ramp point: a
-// tilted or non-planar base such as a branch's saddle cut, a non-planar upper edge, a converging
-// dome) the ramp steps are stretched point by point, per generatrix and per revolution, by
-// 1 / cos(theta) so that the ramps' true heights stay nominal (spec §3.2, §3.5). Stretching moves
-// the points and so changes theta: the stretch is iterated to its fixed point (damped, smooth
-// between neighbouring generatrices, at most 12 layouts), and the layout with the fewest window
-// violations is kept.
+// chord of its step, computeDepositHeights) and the revolution and generatrix it belongs to; the
+// report checks feasibility (Eq. 3.6 and 3.15) on every point. Where the layers lean on the
+// generatrices (cos(theta) < 1 - 1e-4: a tilted or non-planar base such as a branch's saddle cut, a
+// non-planar upper edge, a converging dome) the steps are stretched point by point, per generatrix
+// and per revolution, by 1 / cos(theta): the ramps so that their true heights stay nominal (spec
+// §3.2, §3.5), the modulated revolutions then scaled back so that each generatrix still lays its
+// layers in its modulated length, at one true height. Stretching moves the points and so changes
+// theta: the stretch is iterated to its fixed point (damped, smooth between neighbouring
+// generatrices, at most 12 layouts), and the layout with the fewest window violations is kept.
+// The seam goes on the generatrix that leans least along the travel (seam_placement.h); points keep
+// the given generatrix numbers. See docs/spiral-heights.md.
 //
 // Throws InputError for unusable input (see StartupProfile, spiral_input.h) and for generatrices
 // too short to hold the start-up, the termination and one layer of h_min. An infeasible window is
