@@ -107,9 +107,9 @@ class Trial {
 
 }  // namespace
 
-std::string PlanAdvice::text() const
+std::string PlanAdvice::text(bool withFlags) const
 {
-  if (found) return change + " (" + flags + "): planned and checked feasible";
+  if (found) return change + (withFlags ? " (" + flags + ")" : "") + ": planned and checked feasible";
   std::string t =
       "cut the part into pieces whose walls rise more evenly, or widen the process window if your process "
       "lays a wider range of beads: no change of window or strategy Spira tried plans it";

@@ -15,8 +15,9 @@ struct PlanAdvice {
   std::string change;              // "widen the window to 1.60 .. 2.40 mm", "use the geodesic strategy"
   std::string flags;               // the spira-cli flags that make it: "--h-min 1.6 --h-max 2.4"
   std::vector<std::string> tried;  // each change tried that did not plan feasibly, and why
-  // One sentence for a message: the change and its flags, or what was tried.
-  std::string text() const;
+  // One sentence for a message: the change (with its spira-cli flags when `withFlags`), or what
+  // was tried.
+  std::string text(bool withFlags = true) const;
 };
 
 // Looks for the smallest change that plans `request`'s part feasibly, planning each candidate in

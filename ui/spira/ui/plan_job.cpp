@@ -112,7 +112,7 @@ PlanJobResult runPlan(const DocumentState& snapshot, const PluginRegistry& regis
   if (!out.feasible) {
     SubProgress adviceProgress(progress, kPlanShare, kPlanShare, "looking for a change that plans it");
     const PlanAdvice advice = adviseChange(registry, request, &plan, adviceProgress);
-    out.advice = advice.found ? advice.change + ": planned and checked feasible" : advice.text();
+    out.advice = advice.text(false);
   }
   out.warnings = plan.warnings;
   out.summary = plan.solid ? plan.solid->summary() + "; " + summaryLine(plan) : summaryLine(plan);
