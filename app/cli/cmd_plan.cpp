@@ -165,7 +165,8 @@ int cmdPlan(const std::vector<std::string>& argv)
     report["advice"] = {{"found", advice->found},
                         {"change", advice->change},
                         {"flags", advice->flags},
-                        {"tried", advice->tried}};
+                        {"tried", advice->tried},
+                        {"cause", advice->cause}};
   }
   bool ok = plan.feasible();
   std::optional<PlanMotion> motion;

@@ -5,6 +5,7 @@
 #include "builtin_plugins.h"
 #include "planning/y_tube.h"
 #include "spira/base/progress.h"
+#include "spira/planning/crotch_flags.h"
 #include "spira/planning/planner.h"
 
 namespace spira::test {
@@ -56,12 +57,42 @@ void expectJunction(double cell, size_t maxMidAir, size_t maxTrunkFlags, size_t 
   std::printf("cell %.1f: arms %zu and %zu points flagged; %s\n", cell, p.paths[1].depositFlags,
               p.paths[2].depositFlags, d.summary().c_str());
   EXPECT_FALSE(p.feasible());
+  // Most flags lie around the crotch, which is the saddle of the analytic Y (to within the grid's
+  // cell) and level across its top: the points over the hollow are all there, and the rings that
+  // cross it are spaced wider than h_max along the wall.
+  const std::vector<CrotchFlags> crotches = flagsAtCrotches(p, 5.2);
+  ASSERT_EQ(crotches.size(), 1u);
+  const CrotchFlags& c = crotches[0];
+  EXPECT_LT((c.crotch - crotch).norm(), cell) << "cell " << cell;
+  EXPECT_GE(2 * c.flagged, d.flags.size()) << d.summary();
+  EXPECT_EQ(c.midAir, d.count(DepositDefect::Unsupported));
+  EXPECT_GT(c.thickest, 2.2 + 0.01);
+  const std::string text = crotchText(crotches, d.flags.size(), 2.2);
+  EXPECT_NE(text.find(std::to_string(c.flagged) + " of the " + std::to_string(d.flags.size())),
+            std::string::npos)
+      << text;
+  std::printf("%s\n", text.c_str());
 }
 
 TEST(Junction, FineYTubeArmsRestOnTheTrunkAwayFromTheCrotch)
 {
   expectJunction(1.5, 3, 5, 60);
 }
+TEST(Junction, AMonoBranchPlanHasNoCrotch)
+{
+  YTube y;
+  y.top = 150.0;
+  y.cell = 1.5;
+  y.bothArms = false;
+  const TriangleMesh mesh = y.mesh();
+  const MeshReport report = validateMesh(mesh);
+  PlanRequest request(mesh, report);
+  NullProgress progress;
+  const PlanOutput p = planPart(builtinRegistry(), request, progress);
+  ASSERT_FALSE(p.branching);
+  EXPECT_TRUE(flagsAtCrotches(p, 5.2).empty());
+}
+
 TEST(Junction, CoarseYTubeArmsRestOnTheTrunkAwayFromTheCrotch)
 {
   expectJunction(4.0, 6, 21, 95);

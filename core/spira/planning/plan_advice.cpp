@@ -7,6 +7,7 @@
 #include "spira/base/error.h"
 #include "spira/base/number_text.h"
 #include "spira/mesh/mesh_report.h"
+#include "spira/planning/crotch_flags.h"
 #include "spira/planning/level_base.h"
 #include "spira/planning/plan_schemas.h"
 
@@ -110,11 +111,14 @@ class Trial {
 std::string PlanAdvice::text(bool withFlags) const
 {
   if (found) return change + (withFlags ? " (" + flags + ")" : "") + ": planned and checked feasible";
-  std::string t =
-      "cut the part into pieces whose walls rise more evenly, or widen the process window if your process "
-      "lays a wider range of beads: no change of window or strategy Spira tried plans it";
+  std::string t = causeExplainsMost ? cause + ": no change of window or strategy Spira tried plans it"
+                                    : "cut the part into pieces whose walls rise more evenly, or widen the "
+                                      "process window if your process lays a wider range of beads: no change "
+                                      "of window or strategy Spira tried plans it";
   for (size_t i = 0; i < tried.size(); ++i) t += (i ? "; " : " (") + tried[i];
-  return tried.empty() ? t : t + ")";
+  if (!tried.empty()) t += ")";
+  if (!causeExplainsMost && !cause.empty()) t += ". " + cause;
+  return t;
 }
 
 PlanAdvice adviseChange(const PluginRegistry& registry, const PlanRequest& request, const PlanOutput* failed,
@@ -161,6 +165,16 @@ PlanAdvice adviseChange(const PluginRegistry& registry, const PlanRequest& reque
         return done(change, "--strategy " + shortId(id) + " " + flags);
     }
   advice.tried = trial.tried;
+  if (failed) {
+    const auto process = request.params.find("process");
+    const double beadWidth =
+        processSettingsFrom(process == request.params.end() ? ParamSet() : process->second).beadWidth;
+    const std::vector<CrotchFlags> crotches = flagsAtCrotches(*failed, beadWidth);
+    size_t atCrotches = 0;
+    for (const CrotchFlags& c : crotches) atCrotches += c.flagged;
+    advice.cause = crotchText(crotches, failed->deposits.flags.size(), settings.hMax);
+    advice.causeExplainsMost = !crotches.empty() && 2 * atCrotches >= failed->deposits.flags.size();
+  }
   return advice;
 }
 

@@ -15,6 +15,9 @@ struct PlanAdvice {
   std::string change;              // "widen the window to 1.60 .. 2.40 mm", "use the geodesic strategy"
   std::string flags;               // the spira-cli flags that make it: "--h-min 1.6 --h-max 2.4"
   std::vector<std::string> tried;  // each change tried that did not plan feasibly, and why
+  // Why no change of settings can plan it, when that is known (a junction's crotch, crotch_flags.h).
+  std::string cause;
+  bool causeExplainsMost = false;  // it holds at least half the flagged points
   // One sentence for a message: the change (with its spira-cli flags when `withFlags`), or what
   // was tried.
   std::string text(bool withFlags = true) const;
@@ -24,6 +27,7 @@ struct PlanAdvice {
 // turn: the window the deposit check measured (when only thin or thick beads failed), then every
 // other strategy at the same window, then every other strategy at the measured window. `failed`
 // is the infeasible plan (null when the strategy refused the part). At most `maxPlans` plans.
+// When none plans and `failed` has flags around a junction's crotch, `cause` says so.
 PlanAdvice adviseChange(const PluginRegistry& registry, const PlanRequest& request, const PlanOutput* failed,
                         Progress& progress, int maxPlans = 4);
 
