@@ -105,6 +105,13 @@ double analyticHeight(double step, double dz)
   return step * around / std::hypot(around, dz);
 }
 
+// The first ring's: its distance along b from the substrate plane, z / cos(theta).
+double analyticPlaneHeight(double z, double dz)
+{
+  const double around = kR * std::sin(2.0 * kPi / kN);
+  return z * std::hypot(around, dz) / around;
+}
+
 void expectOnePolyline(const Trajectory& t, const std::vector<double>& z)
 {
   const double chord = 2.0 * kR * std::sin(kPi / kN);
@@ -234,7 +241,11 @@ TEST(SpiralCylinder, HeightChannelMatchesTheAnalyticTrueHeight)
     // arriving at them; every other point the chord to the next point.
     const bool seam = q % kN == static_cast<size_t>(kN - 1);
     const size_t from = q + 1 < count && !seam ? q : q - 1;
-    EXPECT_NEAR(r.trajectory.points[q].height, analyticHeight(step, z[from + 1] - z[from]), 1e-9) << q;
+    const double rise = z[from + 1] - z[from];
+    EXPECT_NEAR(r.trajectory.points[q].height,
+                q < static_cast<size_t>(kN) ? analyticPlaneHeight(z[q], rise) : analyticHeight(step, rise),
+                1e-9)
+        << q;
   }
 }
 

@@ -157,7 +157,10 @@ TEST(SpiralOpenPart, ConeFramesAndHeightsFromPositions)
       EXPECT_GT(p.build.dot(gen), 0.99);
     }
     const Vec3 below = q >= static_cast<size_t>(n) ? t.points[q - n].position : g.lines[p.generatrix].front();
-    EXPECT_NEAR(p.height, (p.position - below).dot(p.build), 1e-9) << q;
+    if (q < static_cast<size_t>(n))
+      EXPECT_NEAR(p.height, (p.position - below).z() / p.build.z(), 1e-9) << q;
+    else
+      EXPECT_NEAR(p.height, (p.position - below).dot(p.build), 1e-9) << q;
     // The point lies on the cone.
     const double z = p.position.z();
     EXPECT_NEAR(p.position.head<2>().norm(), 40.0 - 15.0 * z / 60.0, 1e-9);

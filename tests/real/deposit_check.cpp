@@ -65,6 +65,9 @@ double median(std::vector<double> v)
 
 struct Heights {
   std::vector<double> h;  // per point, NaN where nothing lies below or the arc is off
+  // A run's last point with material laid within a bead width of it: it ends its bead there and
+  // its height is not judged (see "Measured deposit height").
+  std::vector<bool> ended;
 };
 
 // Measured deposit height at every arc-on point (see "Measured deposit height").
@@ -87,7 +90,7 @@ Heights measureHeights(const std::vector<PathPoint>& pts, const std::vector<int>
   SegmentGrid grid(std::max(reach, 1.0));
   std::vector<size_t> material;  // segment j = (p_j, p_j+1)
   size_t next = 0;               // the first segment start not yet laid down as material
-  Heights out{std::vector<double>(n, kNaN)};
+  Heights out{std::vector<double>(n, kNaN), std::vector<bool>(n, false)};
   for (size_t i = 0; i < n; ++i) {
     if (run[i] < 0) continue;
     // Lay down every segment that ended before i: all of the runs before this one, and of this
@@ -146,6 +149,13 @@ Heights measureHeights(const std::vector<PathPoint>& pts, const std::vector<int>
       });
     }
     if (std::isfinite(best)) out.h[i] = best;
+    if (i + 1 >= n || !sameRun(run, i, i + 1)) {
+      double gap = std::numeric_limits<double>::infinity();
+      grid.query(p, w, [&](size_t j) {
+        gap = std::min(gap, (p - closestOnSegment(p, pts[j].p, pts[j + 1].p)).norm());
+      });
+      out.ended[i] = gap <= w;
+    }
   }
   return out;
 }
@@ -273,7 +283,9 @@ CheckResult checkDeposit(const std::vector<PathPoint>& points, const CheckSettin
     if (!points[i].arc) continue;
     ++r.checked;
     const double h = heights.h[i];
-    if (std::isnan(h) || h > 2.0 * settings.hMax) {
+    if (heights.ended[i]) {
+      // Its bead ends on material within a bead width: its height is not judged.
+    } else if (std::isnan(h) || h > 2.0 * settings.hMax) {
       ++r.unsupported;
       flag(i, Flag::Unsupported);
     } else {

@@ -148,6 +148,21 @@ TEST(DepositCheck, SecondRingStartingAHairBehindTheArcStartRestsOnIt)
   EXPECT_NEAR(r.heightMax, kH, 1e-9);
 }
 
+// A run's last point lays the end of its bead (a closed part's closure point inside its last ring):
+// with material within a bead width it is not judged; farther away it is, like any point.
+TEST(DepositCheck, ARunsLastPointEndsItsBeadOnMaterialWithinABeadWidth)
+{
+  for (const double inside : {3.0, 10.0}) {
+    std::vector<PathPoint> pts = stackedRings(3);
+    PathPoint end;
+    end.p = V3(kRadius - inside, 0.0, 3 * kH);
+    pts.push_back(end);
+    const CheckResult r = checkDeposit(pts, CheckSettings{});
+    EXPECT_EQ(r.unsupported, inside < CheckSettings{}.beadWidth ? 0u : 1u) << inside << ": " << r.summary();
+    EXPECT_EQ(r.flagged(), r.unsupported) << r.summary();
+  }
+}
+
 TEST(DepositCheck, SubstrateBelowTheFirstRing)
 {
   auto pts = stackedRings(2);

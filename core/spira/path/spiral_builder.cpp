@@ -272,7 +272,7 @@ SpiralResult buildPass(const Generatrices& g, const std::vector<ArcLengthPolylin
     c.tangent = last.tangent;
     c.build = last.build;
   }
-  computeDepositHeights(path, steps);
+  computeDepositHeights(path, steps, std::min(count, static_cast<size_t>(n)));
   cosines.assign(count, 1.0);
   for (size_t q = 0; q < count; ++q)
     if (arcSteps[q] > 0.0) cosines[q] = path.points[q].height / arcSteps[q];
@@ -364,7 +364,9 @@ void flattenNearlyUniform(std::vector<double>& scales, int n, double flat)
 // the seam (see above). Without that limit, generatrices whose lean changes abruptly (a branch's
 // arm on its tilted saddle cut) stretch one side of a revolution far more than the other, the step
 // between them turns the layer nearly parallel to the generatrices, theta grows and the iteration
-// runs away. The stretch is capped at kMaxStretch (theta = 60 degrees). Stretches within
+// runs away. The stretch is capped at kMaxStretch (theta = 60 degrees); it falls below 1 only on a
+// first ring that leans at its base, measured from the plane it rests on (computeDepositHeights),
+// where the chord runs steeper than b. Stretches within
 // kStretchFloor of 1 (the height within 0.01 % of nominal) are left at 1, so a part whose layers do
 // not lean keeps exactly the designed layout. Returns the largest change of a scale.
 double stretchSteps(const SpiralResult& pass, const std::vector<double>& cosines, StepScales& scales)
@@ -393,7 +395,7 @@ double stretchSteps(const SpiralResult& pass, const std::vector<double>& cosines
     const int r = p.revolution - (start ? 0 : mod ? rep.nStartupRevolutions : endFirst);
     const size_t at = static_cast<size_t>(r) * n + p.generatrix;
     double stretch = std::min(1.0 / cosines[q], kMaxStretch);
-    if (stretch <= 1.0 + kStretchFloor) stretch = 1.0;
+    if (std::abs(stretch - 1.0) <= kStretchFloor) stretch = 1.0;
     std::vector<double>& to = start ? next.start : mod ? next.mod : next.end;
     const double old = (start ? scales.start : mod ? scales.mod : scales.end)[at];
     to[at] = old + kRelax * (stretch - old);

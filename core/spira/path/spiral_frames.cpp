@@ -54,9 +54,14 @@ bool orientBuildDirection(Trajectory& path, const std::vector<Vec3>& steps)
   return true;
 }
 
-void computeDepositHeights(Trajectory& path, const std::vector<Vec3>& steps)
+void computeDepositHeights(Trajectory& path, const std::vector<Vec3>& steps, size_t firstRing)
 {
-  for (size_t q = 0; q < path.points.size(); ++q) path.points[q].height = steps[q].dot(path.points[q].build);
+  // Build directions flatter than this do not look down onto a plane (as in the deposit check).
+  constexpr double kPlaneMinBz = 0.1;
+  for (size_t q = 0; q < path.points.size(); ++q) {
+    const Vec3& b = path.points[q].build;
+    path.points[q].height = q < firstRing && b.z() >= kPlaneMinBz ? steps[q].z() / b.z() : steps[q].dot(b);
+  }
 }
 
 }  // namespace spira

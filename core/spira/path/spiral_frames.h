@@ -33,6 +33,10 @@ bool orientBuildDirection(Trajectory& path, const std::vector<Vec3>& steps);
 // generatrices the two agree, but across a bend the arc is longer than what lies between the two
 // beads (a 1.8 mm step across a tube wall's 19 degree bend: arc 1.828 mm, chord 1.799 mm), and
 // the chord is what the deposit check measures (docs/deposit-check.md).
-void computeDepositHeights(Trajectory& path, const std::vector<Vec3>& steps);
+// The first `firstRing` points rest on the level plane their generatrices start on (the substrate,
+// or a trunk's level top): their height is the distance from it along b, (steps[q] . z) / b_z, as
+// the deposit check measures the substrate, where b_z >= 0.1; on a wall that leans and curves at
+// its base the chord's projection on b differs from it by the chord's turn (0.7 % on a dome's rim).
+void computeDepositHeights(Trajectory& path, const std::vector<Vec3>& steps, size_t firstRing = 0);
 
 }  // namespace spira

@@ -89,6 +89,24 @@ void extendBelowBase(Generatrices& g, double gap)
   }
 }
 
+// A part standing on the substrate whose base edge is not quite level (a scan, a CAD export cut a
+// hair off the plane): each generatrix starting above the substrate starts on it instead,
+// straight on from its first segment, so the first ring is laid h_min .. h_max above the substrate
+// where the deposit rests, not above the edge. The gap is below h_min / 2 (a larger one is refused
+// as a base that is not level), so no point lands on the extension.
+void extendToSubstrate(Generatrices& g, double substrateZ)
+{
+  for (size_t k = 0; k < g.lines.size(); ++k) {
+    Polyline& line = g.lines[k];
+    if (line.size() < 2 || !(line[0].z() > substrateZ + 1e-9)) continue;
+    const Vec3 down = (line[0] - line[1]).normalized();
+    if (!(down.z() < -1e-3)) continue;
+    line.insert(line.begin(), line[0] + (substrateZ - line[0].z()) / down.z() * down);
+    if (k < g.normals.size() && !g.normals[k].empty())
+      g.normals[k].insert(g.normals[k].begin(), g.normals[k][0]);
+  }
+}
+
 // Closure point, generatrices, spiral and process channels of a part whose field is computed.
 void finishMonoBranch(const PluginRegistry& registry, const PlanRequest& request, const Settings& settings,
                       PlanOutput& out, StageClock& clock, Progress& progress)
@@ -121,7 +139,10 @@ void finishMonoBranch(const PluginRegistry& registry, const PlanRequest& request
   DecomposeResult decomposition = decomposer.decompose(input, settings.decomposerParams, dp);
   out.generatrices = std::move(decomposition.generatrices);
   out.warnings.insert(out.warnings.end(), decomposition.warnings.begin(), decomposition.warnings.end());
-  if (request.baseSupportGap > 0.0) extendBelowBase(out.generatrices, request.baseSupportGap);
+  if (request.baseSupportGap > 0.0)
+    extendBelowBase(out.generatrices, request.baseSupportGap);
+  else
+    extendToSubstrate(out.generatrices, request.substrateZ);
   clock.lap("decomposition");
 
   SubProgress sp(progress, 0.8, 0.95, "spiral");
