@@ -119,16 +119,10 @@ const KnownFailure* knownFailure(const std::string& file, const std::string& str
       {"tube_straight_wall.stl", "geodesic",
        "the deposit check rejects the plan: 27 beads thinner than h_min and 15 thicker than h_max (1.29 to "
        "2.65 mm), z 4-20 mm, on generatrices 0-15 and 179-183, where they cross the waist unevenly"},
-      // Its mid-surface is its wall surface moved in by half the wall (1.25 to 3.15 mm): it fails
-      // as the wall does, plus the groove's step in the mid-surface.
-      {"tube_straight_solid.stl", "isovalue",
-       "planned on its mid-surface (wall 2.45 mm), the deposit check rejects the plan: 3 beads up to 2.24 mm, "
-       "thicker than h_max, low down where the mid-surface steps in and out round the groove (1.25 mm "
-       "wall); the advice widens the window to 1.8 .. 2.25 mm, planned and checked"},
       {"tube_straight_solid.stl", "geodesic",
        "exit 3, refused with the hint to use the iso-value strategy: on its mid-surface (wall 2.45 mm) the "
        "geodesic generatrices meet (8 of the first 31 neighbouring pairs, through saddle vertices), so no "
-       "spiral can follow them; the iso-value plan misses by 3 beads (its mark)"},
+       "spiral can follow them; the iso-value plan it names passes"},
       {"tube_straight_solid.stl", "envelope_projection",
        "exit 3: the mid-surface's skeleton does not rise steadily in z (hint: the iso-value strategy); a "
        "straight tube should plan"},

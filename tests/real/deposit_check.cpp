@@ -199,6 +199,21 @@ void measureCoverage(const std::vector<PathPoint>& pts, const std::vector<int>& 
                [&](size_t j) { d = std::min(d, (q - closestOnSegment(q, pts[j].p, pts[j + 1].p)).norm()); });
     return d;
   };
+  // A sample on the substrate under a bead laid at most h_max above it, within w / 2 sideways.
+  const double halfWidth = 0.5 * s.beadWidth;
+  auto onFootprint = [&](const V3& q) {
+    if (std::abs(q.z - s.substrateZ) > s.tol) return false;
+    bool covered = false;
+    grid.query(q, std::hypot(halfWidth, s.hMax) + s.tol, [&](size_t j) {
+      const V3 a = pts[j].p, c = pts[j + 1].p;
+      const double dx = c.x - a.x, dy = c.y - a.y, len2 = dx * dx + dy * dy;
+      const double t = len2 > 0 ? std::clamp(((q.x - a.x) * dx + (q.y - a.y) * dy) / len2, 0.0, 1.0) : 0.0;
+      const V3 x = a + (c - a) * t;
+      if (std::hypot(x.x - q.x, x.y - q.y) <= halfWidth && x.z <= s.substrateZ + s.hMax + s.tol)
+        covered = true;
+    });
+    return covered;
+  };
   r.coverageChecked = true;
   for (const Triangle& t : surface) {
     const double area = 0.5 * (t[1] - t[0]).cross(t[2] - t[0]).norm();
@@ -211,7 +226,7 @@ void measureCoverage(const std::vector<PathPoint>& pts, const std::vector<int>& 
         const double u = static_cast<double>(a) / m, v = static_cast<double>(b) / m;
         const V3 q = t[0] * (1 - u - v) + t[1] * u + t[2] * v;
         double d = distance(q, reach);
-        if (d <= reach) continue;
+        if (d <= reach || onFootprint(q)) continue;
         r.uncoveredArea += share;
         // How far the path is from here, widening the search up to 64 times the reach.
         for (double radius = 2 * reach; !std::isfinite(d) && radius <= 64 * reach; radius *= 2)

@@ -148,6 +148,32 @@ TEST(DepositCheck, SecondRingStartingAHairBehindTheArcStartRestsOnIt)
   EXPECT_NEAR(r.heightMax, kH, 1e-9);
 }
 
+// A solid's base face, 4.8 mm wide under the first ring (2 mm up): its edges lie 2.4 mm sideways
+// and 2 mm below the ring, out of the 2.61 mm ball, but inside the bead's 5.2 mm footprint on the
+// substrate. Twice as wide, its edges are uncovered.
+TEST(DepositCheck, BaseFaceUnderTheFirstRingIsCoveredByTheBeadsFootprint)
+{
+  const int around = 120;
+  auto annulus = [&](double r0, double r1) {
+    std::vector<Triangle> tris;
+    auto at = [&](double r, int i) {
+      const double a = 2 * kPi * i / around;
+      return V3(r * std::cos(a), r * std::sin(a), 0.0);
+    };
+    for (int i = 0; i < around; ++i) {
+      tris.push_back({at(r0, i), at(r0, i + 1), at(r1, i + 1)});
+      tris.push_back({at(r0, i), at(r1, i + 1), at(r1, i)});
+    }
+    return tris;
+  };
+  const CheckResult narrow =
+      checkDeposit(stackedRings(2), CheckSettings{}, annulus(kRadius - 2.4, kRadius + 2.4));
+  EXPECT_EQ(narrow.uncoveredArea, 0.0) << narrow.summary();
+  const CheckResult wide =
+      checkDeposit(stackedRings(2), CheckSettings{}, annulus(kRadius - 4.8, kRadius + 4.8));
+  EXPECT_GT(wide.uncoveredFraction(), 0.3) << wide.summary();
+}
+
 // A run's last point lays the end of its bead (a closed part's closure point inside its last ring):
 // with material within a bead width it is not judged; farther away it is, like any point.
 TEST(DepositCheck, ARunsLastPointEndsItsBeadOnMaterialWithinABeadWidth)

@@ -205,6 +205,41 @@ TEST(DepositCheck, UncoveredBandAboveTheLastRingIsMeasured)
   EXPECT_NE(r.summary().find("not covered"), std::string::npos) << r.summary();
 }
 
+// A flat ring on the substrate plane from radius r0 to r1, 180 facets around.
+TriangleMesh annulus(double r0, double r1)
+{
+  TriangleMesh m;
+  const int around = 180;
+  for (double r : {r0, r1})
+    for (int i = 0; i < around; ++i) {
+      const double a = 2.0 * kPi * i / around;
+      m.vertices.emplace_back(r * std::cos(a), r * std::sin(a), 0.0);
+    }
+  for (int i = 0; i < around; ++i) {
+    const int a = i, b = (i + 1) % around;
+    m.faces.push_back({a, b, b + around});
+    m.faces.push_back({a, b + around, a + around});
+  }
+  return m;
+}
+
+// The base face of a thin-walled solid, 3.6 mm wide under the first ring (radius 30, 1.5 to
+// 2.5 mm up): its inner and outer edges lie 1.8 mm sideways and up to 2.5 mm below the ring, out
+// of the 2.51 mm ball, but inside the bead's 4 mm footprint on the substrate. Wider than the
+// footprint, the face's edges are uncovered.
+TEST(DepositCheck, BaseFaceUnderTheFirstRingIsCoveredByTheBeadsFootprint)
+{
+  const Trajectory t = cylinderSpiral(3);
+  const TriangleMesh face = annulus(kRadius - 1.8, kRadius + 1.8);
+  const DepositCheckReport r = check(t, &face);
+  EXPECT_EQ(r.uncoveredArea, 0.0) << r.summary();
+  const TriangleMesh wide = annulus(kRadius - 3.0, kRadius + 3.0);
+  const DepositCheckReport w = check(t, &wide);
+  // Beyond 2 mm sideways: 2 x 2 pi R x 1 mm, less the ball's reach where the ring is 1.5 mm up.
+  EXPECT_GT(w.uncoveredArea, 0.5 * 2.0 * 2.0 * kPi * kRadius) << w.summary();
+  EXPECT_LT(w.uncoveredArea, 2.0 * 2.0 * kPi * kRadius * 1.0) << w.summary();
+}
+
 // Each sub-path has its own arc start and stop: a branch starting where its sub-path starts is no
 // jump, and it stands on what the earlier sub-paths laid.
 TEST(DepositCheck, SubPathsAreSeparateArcsOnEarlierMaterial)

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <tuple>
 #include <utility>
 
 #include "spira/base/error.h"
@@ -369,14 +370,41 @@ void flattenNearlyUniform(std::vector<double>& scales, int n, double flat)
 // where the chord runs steeper than b. Stretches within
 // kStretchFloor of 1 (the height within 0.01 % of nominal) are left at 1, so a part whose layers do
 // not lean keeps exactly the designed layout. Returns the largest change of a scale.
-double stretchSteps(const SpiralResult& pass, const std::vector<double>& cosines, StepScales& scales)
+// How smooth a revolution's scales must be depends on how far apart its points are, not on how
+// many there are: a difference ds between neighbours `spacing` apart tilts the ring by about
+// ds h / spacing, and the smoothing should reach about h / 2 along the path. The limit 0.03 and 4
+// passes suit points 0.7 mm apart (120 round the Y tube's arm, h = 2 mm); on the same arm at 360
+// points they let the ring wobble by up to 0.2 mm from one point to the next, tilting b by up to 20
+// degrees between neighbours and planning heights down to 0.86 mm. Denser revolutions get a limit
+// and passes that keep the tilt and the reach in mm; sparser ones keep 0.03 and 4.
+struct RowSmoothing {
+  double limit;
+  int passes;
+};
+RowSmoothing rowSmoothing(const Trajectory& path, int revolution, int n, double h)
+{
+  constexpr double kNeighbourStretch = 0.03, kRingTilt = 0.085;
+  constexpr int kSmoothPasses = 4, kMostPasses = 64;
+  const size_t first = static_cast<size_t>(revolution) * static_cast<size_t>(n);
+  if (n < 2 || first + static_cast<size_t>(n) > path.size()) return {kNeighbourStretch, kSmoothPasses};
+  double length = 0.0;
+  for (size_t q = first + 1; q < first + static_cast<size_t>(n); ++q)
+    length += (path.points[q].position - path.points[q - 1].position).norm();
+  const double spacing = length / (n - 1);
+  if (!(spacing > 0.0)) return {kNeighbourStretch, kMostPasses};
+  // p passes of the 1/4, 1/2, 1/4 filter spread over sqrt(p / 2) points.
+  const double reach = 0.5 * h / spacing;
+  const int passes = static_cast<int>(std::min<double>(kMostPasses, std::ceil(2.0 * reach * reach)));
+  return {std::min(kNeighbourStretch, kRingTilt * spacing / h), std::max(kSmoothPasses, passes)};
+}
+
+double stretchSteps(const SpiralResult& pass, const std::vector<double>& cosines, double h,
+                    StepScales& scales)
 {
   constexpr double kStretchFloor = 1e-4;
   constexpr double kRelax = 0.5;
-  constexpr double kNeighbourStretch = 0.03;
   constexpr double kFlatStretch = 1e-3;
   constexpr double kMaxStretch = 2.0;
-  constexpr int kSmoothPasses = 4;
   const SpiralReport& rep = pass.report;
   const auto& pts = pass.trajectory.points;
   const size_t last = rep.collapsedRevolutions > 0 ? pts.size() - 1 : pts.size();
@@ -401,11 +429,13 @@ double stretchSteps(const SpiralResult& pass, const std::vector<double>& cosines
     to[at] = old + kRelax * (stretch - old);
   }
   double change = 0.0;
-  for (auto [now, was] : {std::pair(&next.start, &scales.start), std::pair(&next.end, &scales.end),
-                          std::pair(&next.mod, &scales.mod)}) {
+  for (auto [now, was, firstRev] :
+       {std::tuple(&next.start, &scales.start, 0), std::tuple(&next.end, &scales.end, endFirst),
+        std::tuple(&next.mod, &scales.mod, rep.nStartupRevolutions)}) {
     for (size_t r = 0; r * n < now->size(); ++r) {
-      smoothAlongPath(now->data() + r * n, n, kSmoothPasses);
-      limitNeighbours(now->data() + r * n, n, kNeighbourStretch);
+      const RowSmoothing row = rowSmoothing(pass.trajectory, firstRev + static_cast<int>(r), n, h);
+      smoothAlongPath(now->data() + r * n, n, row.passes);
+      limitNeighbours(now->data() + r * n, n, row.limit);
     }
     flattenNearlyUniform(*now, n, kFlatStretch);
     for (size_t k = 0; k < now->size(); ++k) change = std::max(change, std::abs((*now)[k] - (*was)[k]));
@@ -448,7 +478,7 @@ SpiralResult buildSpiral(const Generatrices& generatrices, const SpiralSettings&
   SpiralResult best;
   bool stretched = false;
   for (int pass = 1; pass < kMaxPasses; ++pass) {
-    if (stretchSteps(result, cosines, scales) <= kSettled) break;
+    if (stretchSteps(result, cosines, settings.h, scales) <= kSettled) break;
     SpiralResult next;
     try {
       next = buildPass(g, arcs, lengths, settings, scales, cosines, progress);

@@ -405,8 +405,9 @@ DepositCheckReport checkDeposits(const Trajectory& path, const TriangleMesh* sur
   if (surface && !surface->empty()) {
     progress.report(0.7, "surface coverage");
     r.coverRadius = std::max(settings.hMax, 0.5 * settings.beadWidth) + settings.tolerance;
-    const SurfaceCoverage c =
-        measureCoverage(*surface, L.points, grid, r.coverRadius, settings.hMax, progress);
+    const SurfaceCoverage c = measureCoverage(
+        *surface, L.points, grid, r.coverRadius, settings.hMax,
+        {settings.substrateZ, 0.5 * settings.beadWidth, settings.hMax, settings.tolerance}, progress);
     r.coverageChecked = true;
     r.surfaceArea = c.area;
     r.uncoveredArea = c.uncoveredArea;

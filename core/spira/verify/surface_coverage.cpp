@@ -68,10 +68,31 @@ double nearestWithin(const Vec3& q, double radius, const std::vector<Vec3>& poin
   return best;
 }
 
+// Whether a segment passes within the footprint's half width of q horizontally, no higher than
+// its height above the substrate there.
+bool underFootprint(const Vec3& q, const std::vector<Vec3>& points, const SegmentGrid& grid,
+                    const SubstrateFootprint& f, std::vector<uint32_t>& scratch)
+{
+  const Vec3 lo(q.x() - f.halfWidth, q.y() - f.halfWidth, f.z - f.tolerance);
+  const Vec3 hi(q.x() + f.halfWidth, q.y() + f.halfWidth, f.z + f.height + f.tolerance);
+  scratch.clear();
+  grid.collect(lo, hi, scratch);
+  for (uint32_t s : scratch) {
+    const size_t j = grid.from(s);
+    const Vec3 &a = points[j], &c = points[j + 1];
+    const Eigen::Vector2d d = (c - a).head<2>(), w = (q - a).head<2>();
+    const double t = d.squaredNorm() > 0.0 ? std::clamp(w.dot(d) / d.squaredNorm(), 0.0, 1.0) : 0.0;
+    const Vec3 x = a + t * (c - a);
+    if ((x - q).head<2>().norm() <= f.halfWidth && x.z() <= f.z + f.height + f.tolerance) return true;
+  }
+  return false;
+}
+
 }  // namespace
 
 SurfaceCoverage measureCoverage(const TriangleMesh& surface, const std::vector<Vec3>& points,
-                                const SegmentGrid& grid, double radius, double spacing, Progress& progress)
+                                const SegmentGrid& grid, double radius, double spacing,
+                                const SubstrateFootprint& footprint, Progress& progress)
 {
   SurfaceCoverage out;
   const std::vector<Sample> samples = sampleSurface(surface, spacing);
@@ -80,8 +101,14 @@ SurfaceCoverage measureCoverage(const TriangleMesh& surface, const std::vector<V
   tbb::parallel_for(tbb::blocked_range<size_t>(0, samples.size(), 4096), [&](const auto& range) {
     if (progress.cancelled()) return;
     std::vector<uint32_t> scratch;
-    for (size_t i = range.begin(); i != range.end(); ++i)
-      distance[i] = nearestWithin(samples[i].at, radius, points, grid, scratch);
+    for (size_t i = range.begin(); i != range.end(); ++i) {
+      const Vec3& q = samples[i].at;
+      distance[i] = nearestWithin(q, radius, points, grid, scratch);
+      if (distance[i] > radius && footprint.halfWidth > 0.0 &&
+          std::abs(q.z() - footprint.z) <= footprint.tolerance &&
+          underFootprint(q, points, grid, footprint, scratch))
+        distance[i] = radius;
+    }
   });
   progress.checkCancel();
   std::vector<size_t> uncovered;
