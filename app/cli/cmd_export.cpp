@@ -9,6 +9,7 @@
 #include "robot_output.h"
 #include "spira/base/atomic_file.h"
 #include "spira/base/error.h"
+#include "spira/base/output_set.h"
 #include "spira/document/cell_file.h"
 #include "spira/document/document.h"
 #include "spira/pipeline/plan_motion.h"
@@ -99,6 +100,7 @@ ExportSource projectSource(const fs::path& file)
 ExportSource planFolderSource(const fs::path& dir)
 {
   ExportSource s;
+  verifyOutputSet(dir);
   s.report = readPlanReport(dir);
   s.partName = s.report.value("part", dir.filename().string());
   const std::string cellFile = s.report.value("cell_file", "");
@@ -129,16 +131,18 @@ ParamSet merged(ParamSet stored, const ParamSet& given)
 // The plain export for other tools: the planned trajectory and, with a cell, its solved joints.
 int writeCsv(const ExportSource& source, const std::optional<RobotCell>& cell, const fs::path& outDir)
 {
-  writeFileAtomically(outDir / "trajectory.csv", trajectoryCsv(source.trajectory));
-  std::cout << "wrote " << (outDir / "trajectory.csv").string();
+  std::vector<OutputFile> files{{"trajectory.csv", trajectoryCsv(source.trajectory)}};
+  std::string solvedText;
   if (cell) {
     NullProgress progress;
     const MotionResult solved =
         solveSubPaths(*cell, source.trajectory, motionParamsFor(*cell, MotionSettings{}), progress);
-    writeFileAtomically(outDir / "joints.csv", jointsCsv(solved.joints));
-    std::cout << " and joints.csv (" << (solved.report.reachable ? "reachable" : "NOT reachable") << ")";
+    files.push_back({"joints.csv", jointsCsv(solved.joints)});
+    solvedText =
+        std::string(" and joints.csv (") + (solved.report.reachable ? "reachable" : "NOT reachable") + ")";
   }
-  std::cout << "\n";
+  replaceOutputSet(outDir, OutputKind::Program, files);
+  std::cout << "wrote " << (outDir / "trajectory.csv").string() << solvedText << "\n";
   return kOk;
 }
 

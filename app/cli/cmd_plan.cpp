@@ -9,6 +9,7 @@
 #include "robot_output.h"
 #include "spira/base/atomic_file.h"
 #include "spira/base/error.h"
+#include "spira/base/output_set.h"
 #include "spira/document/cell_file.h"
 #include "spira/pipeline/export_job.h"
 #include "spira/pipeline/plan_motion.h"
@@ -187,9 +188,10 @@ int cmdPlan(const std::vector<std::string>& argv)
   for (const auto& [stage, seconds] : plan.timings) report["timings_s"][stage] = seconds;
 
   const Trajectory& finalPath = motion ? motion->trajectory : plan.spiral.trajectory;
-  writeFileAtomically(std::filesystem::path(outDir) / "trajectory.csv", trajectoryCsv(finalPath));
-  if (motion) writeFileAtomically(std::filesystem::path(outDir) / "joints.csv", jointsCsv(motion->joints));
-  writeFileAtomically(std::filesystem::path(outDir) / "report.json", report.dump(2) + "\n");
+  std::vector<OutputFile> planFiles{{"trajectory.csv", trajectoryCsv(finalPath)}};
+  if (motion) planFiles.push_back({"joints.csv", jointsCsv(motion->joints)});
+  planFiles.push_back({"report.json", report.dump(2) + "\n"});
+  replaceOutputSet(outDir, OutputKind::Plan, planFiles);
   printSummary(plan, std::cout);
   if (advice) std::cout << "advice: " << advice->text() << "\n";
   if (motion) printMotionSummary(motion->report, std::cout);

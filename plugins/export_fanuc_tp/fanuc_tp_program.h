@@ -5,7 +5,7 @@
 
 #include "spira/base/progress.h"
 #include "spira/export/export_path.h"
-#include "spira/export/file_set.h"
+#include "spira/base/output_set.h"
 
 namespace spira {
 

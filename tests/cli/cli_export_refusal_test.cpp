@@ -60,5 +60,38 @@ TEST(CliExportRefusal, UnreachablePointsMakeTheExportInfeasible)
   EXPECT_EQ(forced.exitCode, 0) << forced.err << forced.out;
 }
 
+// Planning again into a folder replaces the whole set: a plan whose export is refused leaves no
+// program of the previous plan beside it, and a folder whose files do not belong together (an
+// older writer killed between two renames) is refused by export, naming the file.
+TEST(CliExportRefusal, ARefusedExportLeavesNoProgramOfThePreviousPlan)
+{
+  TempDir dir;
+  const fs::path part = cylinderPart(dir.path(), 50.0, 30.0);
+  const fs::path plan = dir / "plan";
+  const fs::path reachable = sourceDir() / "resources/cells/kuka_kr16_2_table.cell";
+  const CliRun first = runCli({"plan", part.string(), "-o", plan.string(), "--cell", reachable.string(),
+                               "--points-per-rev", "36", "--export", "krl"});
+  ASSERT_EQ(first.exitCode, 0) << first.err << first.out;
+  size_t programs = 0;
+  for (const auto& e : fs::directory_iterator(plan)) programs += e.path().extension() == ".src";
+  ASSERT_EQ(programs, 1u);
+
+  const CliRun second =
+      runCli({"plan", part.string(), "-o", plan.string(), "--cell", outOfReachCell(dir.path()).string(),
+              "--points-per-rev", "36", "--export", "krl"});
+  EXPECT_EQ(second.exitCode, 4) << second.err << second.out;
+  for (const auto& e : fs::directory_iterator(plan))
+    EXPECT_TRUE(e.path().extension() != ".src" && e.path().extension() != ".dat") << e.path();
+  EXPECT_EQ(readReport(plan)["reachable"], false);
+
+  std::string csv = slurp(plan / "trajectory.csv");
+  csv.back() = csv.back() == '\n' ? ' ' : '\n';
+  writeBytes(plan / "trajectory.csv", csv);
+  const CliRun mixed = runCli({"export", plan.string(), "--format", "krl", "-o", (dir / "program").string()});
+  EXPECT_EQ(mixed.exitCode, 3) << mixed.err << mixed.out;
+  EXPECT_NE(mixed.err.find("trajectory.csv"), std::string::npos) << mixed.err;
+  EXPECT_NE(mixed.err.find("plan it again"), std::string::npos) << mixed.err;
+}
+
 }  // namespace
 }  // namespace spira::test

@@ -3,6 +3,8 @@
 // folders, all-or-nothing writing and cancellation.
 #include <gtest/gtest.h>
 
+#include "spira/base/output_set.h"
+
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -241,6 +243,7 @@ TEST_P(ExportChecks, FilesAreWrittenAllOrNone)
   std::filesystem::create_directories(dir / blocked / "inside");
   EXPECT_THROW(test::runExporter(c.id, plan, nullptr, params, dir.path()), IoError);
   EXPECT_TRUE(test::filesIn(dir.path()).empty());
+  EXPECT_FALSE(std::filesystem::exists(dir / kOutputManifest));
 }
 
 TEST_P(ExportChecks, CancellationWritesNothing)

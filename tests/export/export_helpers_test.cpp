@@ -6,7 +6,6 @@
 
 #include "export_test_data.h"
 #include "spira/base/error.h"
-#include "spira/export/file_set.h"
 #include "spira/export/fixed_number.h"
 #include "spira/export/program_header.h"
 #include "spira/export/program_names.h"
@@ -137,33 +136,6 @@ TEST(ProgramHeader, OrderAndPlainText)
   EXPECT_EQ(lines[3], "date: 2024-05-01");
   EXPECT_EQ(lines[4], "h: 2 mm");
   EXPECT_EQ(lines[5], "tool: 1");
-}
-
-TEST(FileSet, WritesEveryFile)
-{
-  test::TempDir dir;
-  const auto written = writeFileSet(dir.path(), {{"a.src", "one"}, {"a.dat", "two"}});
-  ASSERT_EQ(written.size(), 2u);
-  EXPECT_EQ(written[1], dir / "a.dat");
-  EXPECT_EQ(test::filesIn(dir.path()), (std::vector<std::string>{"a.dat", "a.src"}));
-}
-
-TEST(FileSet, AFailingFileLeavesNothingBehind)
-{
-  test::TempDir dir;
-  // A folder where the second file should go makes its rename fail after the first succeeded.
-  std::filesystem::create_directory(dir / "a.dat");
-  std::filesystem::create_directory(dir / "a.dat" / "keep");
-  EXPECT_THROW(writeFileSet(dir.path(), {{"a.src", "one"}, {"a.dat", "two"}, {"b.src", "three"}}), IoError);
-  EXPECT_TRUE(test::filesIn(dir.path()).empty());  // no a.src, no b.src, no temporary file
-  EXPECT_TRUE(std::filesystem::is_directory(dir / "a.dat" / "keep"));
-}
-
-TEST(FileSet, MissingFolderIsAnIoError)
-{
-  test::TempDir dir;
-  EXPECT_THROW(writeFileSet(dir / "missing", {{"a.ls", "x"}}), IoError);
-  EXPECT_THROW(writeFileSet(dir.path(), {{"a.ls", "x"}, {"a.ls", "y"}}), InternalError);
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "builtin_plugins.h"
+#include "spira/base/output_set.h"
 #include "spira/base/progress.h"
 #include "spira/base/units.h"
 #include "spira/path/tool_frame.h"
@@ -108,7 +109,8 @@ std::vector<std::string> filesIn(const std::filesystem::path& dir)
 {
   std::vector<std::string> names;
   for (const auto& e : std::filesystem::directory_iterator(dir))
-    if (e.is_regular_file()) names.push_back(e.path().filename().string());
+    if (e.is_regular_file() && e.path().filename() != kOutputManifest)
+      names.push_back(e.path().filename().string());
   std::sort(names.begin(), names.end());
   return names;
 }

@@ -38,7 +38,7 @@ ExportResult runExporter(const std::string& id, const Trajectory& plan, const Jo
 double positionError(const Transform& a, const Transform& b);
 double orientationErrorDeg(const Transform& a, const Transform& b);
 
-// Names of the regular files in `dir`, sorted.
+// Names of the regular files in `dir`, sorted, without the manifest of its output sets.
 std::vector<std::string> filesIn(const std::filesystem::path& dir);
 
 }  // namespace spira::test

@@ -32,18 +32,10 @@ fs::path temporarySibling(const fs::path& target)
 
 }  // namespace
 
-void writeFileAtomically(const fs::path& target, std::string_view bytes)
+std::string writeSynced(const fs::path& path, std::string_view bytes)
 {
-  const fs::path dir = target.has_parent_path() ? target.parent_path() : fs::path(".");
-  std::error_code ec;
-  if (!fs::is_directory(dir, ec))
-    throw IoError("cannot write '" + target.string() + "': folder '" + dir.string() + "' does not exist",
-                  "create the folder or choose another output path");
-  const fs::path tmp = temporarySibling(dir / target.filename());
-  const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-  if (fd < 0)
-    throw IoError("cannot write '" + target.string() + "': " + errnoText(),
-                  "check that the folder is writable and the disk is not full");
+  const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  if (fd < 0) return errnoText();
   const char* p = bytes.data();
   size_t left = bytes.size();
   while (left > 0) {
@@ -52,17 +44,32 @@ void writeFileAtomically(const fs::path& target, std::string_view bytes)
       if (errno == EINTR) continue;
       const std::string why = errnoText();
       ::close(fd);
-      fs::remove(tmp, ec);
-      throw IoError("cannot write '" + target.string() + "': " + why,
-                    "check free disk space and permissions");
+      return why;
     }
     p += n;
     left -= static_cast<size_t>(n);
   }
-  if (::fsync(fd) != 0 || ::close(fd) != 0) {
+  if (::fsync(fd) != 0) {
     const std::string why = errnoText();
+    ::close(fd);
+    return why;
+  }
+  if (::close(fd) != 0) return errnoText();
+  return {};
+}
+
+void writeFileAtomically(const fs::path& target, std::string_view bytes)
+{
+  const fs::path dir = target.has_parent_path() ? target.parent_path() : fs::path(".");
+  std::error_code ec;
+  if (!fs::is_directory(dir, ec))
+    throw IoError("cannot write '" + target.string() + "': folder '" + dir.string() + "' does not exist",
+                  "create the folder or choose another output path");
+  const fs::path tmp = temporarySibling(dir / target.filename());
+  if (const std::string why = writeSynced(tmp, bytes); !why.empty()) {
     fs::remove(tmp, ec);
-    throw IoError("cannot write '" + target.string() + "': " + why, "check free disk space and permissions");
+    throw IoError("cannot write '" + target.string() + "': " + why,
+                  "check that the folder is writable and the disk is not full");
   }
   fs::rename(tmp, target, ec);
   if (ec) {

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <filesystem>
+#include <string>
 #include <string_view>
 
 namespace spira {
@@ -9,6 +10,10 @@ namespace spira {
 // flushed, synced and renamed over the target. A reader never sees a half-written file and a
 // failure leaves the previous file untouched. Throws IoError with the reason.
 void writeFileAtomically(const std::filesystem::path& target, std::string_view bytes);
+
+// Writes `bytes` to `path` (created or truncated), flushed and synced to disk. Returns the
+// system's reason when it fails, empty on success; the caller decides what a failure means.
+std::string writeSynced(const std::filesystem::path& path, std::string_view bytes);
 
 // Throws IoError unless `dir` exists (or can be created) and a file can be created in it.
 // Call it before starting work whose output would otherwise be lost at the end.

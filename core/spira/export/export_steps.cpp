@@ -19,7 +19,7 @@ std::vector<std::filesystem::path> finishExport(const std::filesystem::path& out
                                                 const std::vector<OutputFile>& files, Progress& progress)
 {
   progress.report(0.9, "writing files");
-  std::vector<std::filesystem::path> written = writeFileSet(outDir, files);
+  std::vector<std::filesystem::path> written = replaceOutputSet(outDir, OutputKind::Program, files);
   progress.report(1.0, "done");
   return written;
 }

@@ -4,9 +4,9 @@
 #include <string>
 #include <vector>
 
+#include "spira/base/output_set.h"
 #include "spira/base/progress.h"
 #include "spira/export/export_path.h"
-#include "spira/export/file_set.h"
 #include "spira/plugin/parameter.h"
 
 namespace spira {
@@ -26,8 +26,8 @@ struct ExportStart {
 ExportStart startExport(const ParamSchema& schema, const ParamSet& params,
                         const std::filesystem::path& outDir, const std::string& controller);
 
-// Writes the program's files into `outDir`, all of them or none (writeFileSet), reporting progress
-// to the end; returns the written paths.
+// Writes the program's files into `outDir` as one set replacing the previous program, all of them
+// or none (replaceOutputSet), reporting progress to the end; returns the written paths.
 std::vector<std::filesystem::path> finishExport(const std::filesystem::path& outDir,
                                                 const std::vector<OutputFile>& files, Progress& progress);
 

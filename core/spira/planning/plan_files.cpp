@@ -4,7 +4,6 @@
 
 #include <nlohmann/json.hpp>
 
-#include "spira/base/atomic_file.h"
 #include "spira/base/number_text.h"
 #include "spira/base/units.h"
 
@@ -84,10 +83,11 @@ nlohmann::json depositCheckJson(const DepositCheckReport& d)
   nlohmann::json points = nlohmann::json::array();
   for (const DepositFlag& f : d.flags) {
     if (points.size() >= 1000) break;
-    points.push_back({{"point", f.point},
-                      {"kind", depositDefectName(f.kind)},
-                      {"height", std::isfinite(f.height) ? nlohmann::json(f.height) : nlohmann::json(nullptr)},
-                      {"position", point(f.position)}});
+    points.push_back(
+        {{"point", f.point},
+         {"kind", depositDefectName(f.kind)},
+         {"height", std::isfinite(f.height) ? nlohmann::json(f.height) : nlohmann::json(nullptr)},
+         {"position", point(f.position)}});
   }
   nlohmann::json j = {{"feasible", d.feasible},
                       {"summary", d.summary()},
@@ -216,14 +216,6 @@ nlohmann::json planReportJson(const PlanOutput& plan, const std::string& strateg
   j["paths"] = paths;
   if (plan.branching) j["branching"] = branchingJson(*plan.branching);
   return j;
-}
-
-void writePlanFiles(const PlanOutput& plan, const std::string& strategy, const std::filesystem::path& dir)
-{
-  const std::string csv = trajectoryCsv(plan.spiral.trajectory);
-  const std::string report = planReportJson(plan, strategy).dump(2) + "\n";
-  writeFileAtomically(dir / "trajectory.csv", csv);
-  writeFileAtomically(dir / "report.json", report);
 }
 
 }  // namespace spira

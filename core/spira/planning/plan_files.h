@@ -21,7 +21,4 @@ std::string trajectoryCsv(const Trajectory& trajectory);
 // one summary per sub-path under "paths" (and "branching" for a multi-branch part).
 nlohmann::json planReportJson(const PlanOutput& plan, const std::string& strategy);
 
-// Writes DIR/trajectory.csv and DIR/report.json, each atomically.
-void writePlanFiles(const PlanOutput& plan, const std::string& strategy, const std::filesystem::path& dir);
-
 }  // namespace spira
