@@ -82,7 +82,9 @@ class HeaderParser {
         if (header_.elements.empty()) fail("a 'property' line before any 'element' line");
         property(w);
       } else {
-        fail("'" + printable(w[0]) + "', which is not a PLY header keyword");
+        const bool data = std::string_view("0123456789+-.").find(w[0][0]) != std::string_view::npos;
+        fail("'" + printable(w[0]) + "', which is not a PLY header keyword" +
+             (data ? " (the 'end_header' line is missing before the data)" : ""));
       }
     }
     if (!formatSeen) fail("'end_header' before any 'format' line");

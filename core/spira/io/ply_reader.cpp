@@ -26,6 +26,12 @@ std::string itemsOf(const PlyElement& e)
   return "'" + e.name + "' items";
 }
 
+std::string counted(const PlyElement& e)
+{
+  if (e.count != 1) return std::to_string(e.count) + " " + itemsOf(e);
+  return "1 " + (e.name == "vertex" || e.name == "face" ? e.name : "'" + e.name + "' item");
+}
+
 std::string itemOf(const PlyElement& e, std::uint64_t index)
 {
   const std::string n = std::to_string(index);
@@ -65,7 +71,7 @@ std::string declaredCounts(const PlyHeader& h)
   std::string s;
   for (const PlyElement& e : h.elements) {
     if (!s.empty()) s += ", ";
-    s += std::to_string(e.count) + " " + itemsOf(e);
+    s += counted(e);
   }
   return s;
 }
@@ -160,8 +166,8 @@ class PlyParser {
       const PlyElement& e = header_.elements[i];
       if (e.properties.empty() || e.count == 0) continue;
       if (static_cast<int>(i) != vertex_ && static_cast<int>(i) != face_)
-        out_.warnings.push_back("the " + std::to_string(e.count) + " " + itemsOf(e) + " in '" + source_ +
-                                "' were ignored (Spira reads vertices and faces)");
+        out_.warnings.push_back("'" + source_ + "': element '" + e.name + "' (" + counted(e) +
+                                ") was ignored; Spira reads vertices and faces");
       for (std::uint64_t k = 0; k < e.count; ++k) {
         if (k % kCancelStride == 0) {
           progress_.checkCancel();
