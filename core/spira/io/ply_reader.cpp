@@ -283,12 +283,13 @@ class PlyParser {
 
   void addCountWarnings()
   {
+    const auto faces = [](size_t n) { return n == 1 ? std::string("1 face") : std::to_string(n) + " faces"; };
     if (out_.polygonFaces > 0)
-      out_.warnings.push_back(std::to_string(out_.polygonFaces) + " faces in '" + source_ +
-                              "' had more than three corners and were split into triangles");
+      out_.warnings.push_back(faces(out_.polygonFaces) + " in '" + source_ +
+                              "' with more than three corners split into triangles");
     if (out_.degenerateFaces > 0)
-      out_.warnings.push_back(std::to_string(out_.degenerateFaces) + " faces in '" + source_ +
-                              "' had fewer than three corners and were ignored");
+      out_.warnings.push_back(faces(out_.degenerateFaces) + " in '" + source_ +
+                              "' with fewer than three corners ignored");
   }
 
   template <class Cursor>
