@@ -267,9 +267,9 @@ class PlyParser {
 
   void checkTrailing(AsciiCursor& cursor)
   {
-    const std::string where = cursor.where();
     if (!cursor.restIsBlank())
-      out_.warnings.push_back("'" + source_ + "' " + where + ": the text after the last element was ignored");
+      out_.warnings.push_back("'" + source_ + "' " + cursor.where() +
+                              ": the text after the last element was ignored");
   }
 
   template <bool BigEndian>
@@ -299,9 +299,8 @@ class PlyParser {
     const std::string at = "'" + source_ + "' " + cursor.where() + ": ";
     switch (problem.kind) {
       case PlyBodyProblem::End:
-        throw InputError("'" + source_ + "' ends after " + std::to_string(k) + " of the " +
-                             std::to_string(e.count) + " " + itemsOf(e) + " its PLY header declares (" +
-                             cursor.where() + ")",
+        throw InputError("'" + source_ + "' ends after " + std::to_string(k) + " of the " + counted(e) +
+                             " its PLY header declares (" + cursor.where() + ")",
                          "the file is truncated; export the part again");
       case PlyBodyProblem::ShortItem:
         throw InputError(
