@@ -13,8 +13,12 @@ namespace spira::test {
 struct PlyBytes {
   explicit PlyBytes(bool bigEndian, std::string lineEnd = "\n") : big(bigEndian), eol(std::move(lineEnd)) {}
 
-  // "ply", the given lines (format, elements, properties) and end_header.
-  void header(const std::string& lines) { bytes = "ply" + eol + lines + "end_header" + eol; }
+  // "ply", the format line of this byte order, the given element and property lines, end_header.
+  void header(const std::string& lines)
+  {
+    bytes = "ply" + eol + "format " + (big ? "binary_big_endian" : "binary_little_endian") + " 1.0" + eol +
+            lines + "end_header" + eol;
+  }
 
   template <class T>
   void put(T value)

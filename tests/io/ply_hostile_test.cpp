@@ -128,7 +128,7 @@ TEST(PlyHostile, BinaryCountsBeyondTheFileSizeAndBeyond64Bits)
   TempDir dir;
   for (const char* count : {"99999999", "18446744073709551615"}) {
     PlyBytes b(false);
-    b.header(std::string("format binary_little_endian 1.0\nelement vertex 3\nproperty double x\n"
+    b.header(std::string("element vertex 3\nproperty double x\n"
                          "property double y\nproperty double z\nelement face ") +
              count + "\nproperty list uchar int vertex_indices\n");
     for (int i = 0; i < 9; ++i) b.put(0.0);

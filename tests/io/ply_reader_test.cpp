@@ -52,9 +52,9 @@ TEST(PlyReader, BigEndianReadsTheSameMeshAsLittleEndian)
   const TriangleMesh m = makeTetrahedron(7.5);
   for (bool big : {false, true}) {
     PlyBytes b(big);
-    b.header(std::string("format ") + (big ? "binary_big_endian" : "binary_little_endian") +
-             " 1.0\nelement vertex 4\nproperty float x\nproperty float y\nproperty float z\n"
-             "element face 4\nproperty list uchar int vertex_indices\n");
+    b.header(
+        "element vertex 4\nproperty float x\nproperty float y\nproperty float z\n"
+        "element face 4\nproperty list uchar int vertex_indices\n");
     for (const Vec3& p : m.vertices)
       for (int k = 0; k < 3; ++k) b.put(static_cast<float>(p[k]));
     for (const Face& f : m.faces) {
@@ -73,9 +73,9 @@ TEST(PlyReader, CoordinatesOfEveryNumericTypeAndAlias)
   // x as double, y as a signed 16-bit integer, z as an unsigned byte, with a normal between them.
   for (bool big : {false, true}) {
     PlyBytes b(big);
-    b.header(std::string("format ") + (big ? "binary_big_endian" : "binary_little_endian") +
-             " 1.0\nelement vertex 3\nproperty float64 x\nproperty float32 nx\nproperty int16 y\n"
-             "property uint8 z\nelement face 1\nproperty list uint8 uint32 vertex_indices\n");
+    b.header(
+        "element vertex 3\nproperty float64 x\nproperty float32 nx\nproperty int16 y\n"
+        "property uint8 z\nelement face 1\nproperty list uint8 uint32 vertex_indices\n");
     const double xs[3] = {-1.25, 1e300, 0.1};
     const std::int16_t ys[3] = {-32768, 0, 32767};
     const std::uint8_t zs[3] = {0, 200, 255};
@@ -132,16 +132,16 @@ TEST(PlyReader, QuadMeshIsFanTriangulatedInFileOrder)
 
 // Normals, colours, a vertex list property, a face colour and texture list before the corners,
 // and two elements Spira does not use (one with a list): all read past, in both encodings.
-std::string extrasHeader(const char* format)
+std::string extrasHeader()
 {
-  return std::string("format ") + format +
-         " 1.0\nelement vertex 3\nproperty float nx\nproperty float ny\nproperty float nz\n"
-         "property float x\nproperty uchar red\nproperty float y\nproperty list uchar float tags\n"
-         "property float z\nproperty uchar alpha\n"
-         "element edge 2\nproperty int vertex1\nproperty int vertex2\nproperty list ushort short path\n"
-         "element face 2\nproperty uchar flags\nproperty list uchar float texcoord\n"
-         "property list int uint vertex_index\nproperty ushort material\n"
-         "element material 1\nproperty double shininess\n";
+  return std::string(
+      "element vertex 3\nproperty float nx\nproperty float ny\nproperty float nz\n"
+      "property float x\nproperty uchar red\nproperty float y\nproperty list uchar float tags\n"
+      "property float z\nproperty uchar alpha\n"
+      "element edge 2\nproperty int vertex1\nproperty int vertex2\nproperty list ushort short path\n"
+      "element face 2\nproperty uchar flags\nproperty list uchar float texcoord\n"
+      "property list int uint vertex_index\nproperty ushort material\n"
+      "element material 1\nproperty double shininess\n");
 }
 
 void expectExtrasMesh(const PlyData& ply)
@@ -162,7 +162,7 @@ void expectExtrasMesh(const PlyData& ply)
 
 TEST(PlyReader, AsciiExtraPropertiesAndElementsAreSkipped)
 {
-  const PlyData ply = parsePlyBytes("ply\n" + extrasHeader("ascii") +
+  const PlyData ply = parsePlyBytes("ply\nformat ascii 1.0\n" + extrasHeader() +
                                     "end_header\n"
                                     "0 0 1 1 255 2 0 3 7\n0 0 1 4 0 5 2 -1.5 2.5 6 7\n0 0 1 7 9 8 1 3 9 0\n"
                                     "\n"  // blank lines between items are tolerated
@@ -175,7 +175,7 @@ TEST(PlyReader, BinaryExtraPropertiesAndElementsAreSkipped)
 {
   for (bool big : {false, true}) {
     PlyBytes b(big);
-    b.header(extrasHeader(big ? "binary_big_endian" : "binary_little_endian"));
+    b.header(extrasHeader());
     for (int v = 0; v < 3; ++v) {
       b.put(0.f), b.put(0.f), b.put(1.f);
       b.put(static_cast<float>(3 * v + 1));
@@ -219,7 +219,7 @@ TEST(PlyReader, BinaryAfterCrLfEndHeader)
 {
   PlyBytes b(false, "\r\n");
   b.header(
-      "format binary_little_endian 1.0\r\nelement vertex 3\r\nproperty float x\r\nproperty float y\r\n"
+      "element vertex 3\r\nproperty float x\r\nproperty float y\r\n"
       "property float z\r\nelement face 1\r\nproperty list uchar int vertex_indices\r\n");
   // A first coordinate whose first byte is '\n' must not be taken for part of the header's line end.
   for (float c : {1.4e-44f, 0.f, 0.f, 1.f, 0.f, 0.f, 0.f, 1.f, 0.f}) b.put(c);

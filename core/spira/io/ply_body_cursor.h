@@ -46,51 +46,10 @@ class BinaryCursor {
   size_t position() const { return pos_; }
   std::string where() const { return "byte " + std::to_string(pos_); }
 
-  double real(PlyType type)
-  {
-    switch (type) {
-      case PlyType::Int8:
-        return load<std::int8_t>();
-      case PlyType::UInt8:
-        return load<std::uint8_t>();
-      case PlyType::Int16:
-        return load<std::int16_t>();
-      case PlyType::UInt16:
-        return load<std::uint16_t>();
-      case PlyType::Int32:
-        return load<std::int32_t>();
-      case PlyType::UInt32:
-        return load<std::uint32_t>();
-      case PlyType::Float32:
-        return static_cast<double>(load<float>());
-      case PlyType::Float64:
-        return load<double>();
-    }
-    return 0.0;
-  }
+  double real(PlyType type) { return value<double>(type); }
 
-  // Only called for integer types (the header refuses float counts and float corner indices).
-  std::int64_t whole(PlyType type)
-  {
-    switch (type) {
-      case PlyType::Int8:
-        return load<std::int8_t>();
-      case PlyType::UInt8:
-        return load<std::uint8_t>();
-      case PlyType::Int16:
-        return load<std::int16_t>();
-      case PlyType::UInt16:
-        return load<std::uint16_t>();
-      case PlyType::Int32:
-        return load<std::int32_t>();
-      case PlyType::UInt32:
-        return load<std::uint32_t>();
-      case PlyType::Float32:
-      case PlyType::Float64:
-        break;
-    }
-    return static_cast<std::int64_t>(real(type));
-  }
+  // Counts and corner indices: the header gives them integer types only.
+  std::int64_t whole(PlyType type) { return plyTypeIsInteger(type) ? value<std::int64_t>(type) : -1; }
 
   void skip(PlyType type) { advance(plyTypeSize(type)); }
 
@@ -106,6 +65,30 @@ class BinaryCursor {
   {
     if (bytes_.size() - pos_ < n) throw PlyBodyProblem{PlyBodyProblem::End, {}};
     pos_ += n;
+  }
+
+  template <class R>
+  R value(PlyType type)
+  {
+    switch (type) {
+      case PlyType::Int8:
+        return static_cast<R>(load<std::int8_t>());
+      case PlyType::UInt8:
+        return static_cast<R>(load<std::uint8_t>());
+      case PlyType::Int16:
+        return static_cast<R>(load<std::int16_t>());
+      case PlyType::UInt16:
+        return static_cast<R>(load<std::uint16_t>());
+      case PlyType::Int32:
+        return static_cast<R>(load<std::int32_t>());
+      case PlyType::UInt32:
+        return static_cast<R>(load<std::uint32_t>());
+      case PlyType::Float32:
+        return static_cast<R>(load<float>());
+      case PlyType::Float64:
+        return static_cast<R>(load<double>());
+    }
+    return R{};
   }
 
   template <class T>
