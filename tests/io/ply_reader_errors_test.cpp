@@ -2,9 +2,12 @@
 #include <gtest/gtest.h>
 
 #include <cstdint>
+#include <random>
 
 #include "io_test_util.h"
 #include "ply_bytes.h"
+#include "spira/io/mesh_writers.h"
+#include "spira/mesh/mesh_primitives.h"
 
 namespace spira::test {
 namespace {
@@ -141,6 +144,45 @@ TEST(PlyReaderErrors, ElementWithoutPropertiesTakesNoTimeWhateverItsCount)
       "element vertex 0\n" +
       kXyz + "element face 0\nproperty list uchar int vertex_indices\nend_header\n");
   EXPECT_EQ(ply.mesh.faceCount(), 0u);
+}
+
+// Random damage to valid files, as a fuzzer makes it: every result is a mesh or an InputError.
+TEST(PlyReaderErrors, DamagedFilesAreReadOrRefusedNeverAnythingElse)
+{
+  const TriangleMesh m = makeOpenCylinder(10.0, 10.0, 8, 3);
+  std::mt19937 rng(15);
+  size_t read = 0, refused = 0;
+  for (MeshFileFormat format : {MeshFileFormat::PlyAscii, MeshFileFormat::PlyBinary}) {
+    const std::string valid = encodeMesh(m, format);
+    for (int trial = 0; trial < 400; ++trial) {
+      std::string bytes = valid;
+      const auto at = [&] { return static_cast<size_t>(rng() % bytes.size()); };
+      switch (trial % 4) {
+        case 0:
+          bytes.resize(at());
+          break;
+        case 1:
+          for (int k = 0; k < 3; ++k) bytes[at()] = static_cast<char>(rng() & 0xFF);
+          break;
+        case 2:
+          bytes.insert(at(), 1, static_cast<char>(rng() & 0xFF));
+          break;
+        default:
+          bytes.erase(at(), 1 + rng() % 8);
+          break;
+      }
+      try {
+        parsePlyBytes(bytes);
+        ++read;
+      } catch (const InputError& e) {
+        ++refused;
+        EXPECT_EQ(std::string(e.what()).find('\n'), std::string::npos) << e.what();
+      }
+    }
+  }
+  // Both outcomes occur: the damage reaches the header, the counts and the values.
+  EXPECT_GT(read, 50u);
+  EXPECT_GT(refused, 200u);
 }
 
 }  // namespace
