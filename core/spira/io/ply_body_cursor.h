@@ -28,14 +28,6 @@ struct PlyBodyProblem {
   std::string found;  // the offending text, made printable
 };
 
-inline std::string printableToken(std::string_view s)
-{
-  std::string shown(s.substr(0, 40));
-  for (char& c : shown)
-    if (static_cast<unsigned char>(c) < 0x20 || static_cast<unsigned char>(c) >= 0x7F) c = '?';
-  return shown;
-}
-
 template <bool BigEndian>
 class BinaryCursor {
  public:
@@ -129,7 +121,7 @@ class AsciiCursor {
     skipSpaces();
     if (pos_ < text_.size() && text_[pos_] != '\n') {
       const size_t end = text_.find_first_of(" \t\r\n", pos_);
-      throw PlyBodyProblem{PlyBodyProblem::LongItem, printableToken(text_.substr(pos_, end - pos_))};
+      throw PlyBodyProblem{PlyBodyProblem::LongItem, plyExcerpt(text_.substr(pos_, end - pos_))};
     }
   }
 
@@ -141,7 +133,7 @@ class AsciiCursor {
     double value = 0.0;
     const auto r = std::from_chars(digits.data(), digits.data() + digits.size(), value);
     if (r.ec == std::errc::invalid_argument || r.ptr != digits.data() + digits.size())
-      throw PlyBodyProblem{PlyBodyProblem::NotNumber, printableToken(t)};
+      throw PlyBodyProblem{PlyBodyProblem::NotNumber, plyExcerpt(t)};
     if (r.ec == std::errc::result_out_of_range) {
       // Overflow becomes infinity so that the import reports it with the other non-finite values.
       const size_t e = digits.find_first_of("eE");
@@ -160,7 +152,7 @@ class AsciiCursor {
     std::int64_t value = 0;
     const auto r = std::from_chars(digits.data(), digits.data() + digits.size(), value);
     if (r.ec != std::errc() || r.ptr != digits.data() + digits.size())
-      throw PlyBodyProblem{PlyBodyProblem::NotWhole, printableToken(t)};
+      throw PlyBodyProblem{PlyBodyProblem::NotWhole, plyExcerpt(t)};
     return value;
   }
 

@@ -31,15 +31,6 @@ std::optional<PlyType> typeNamed(std::string_view name)
   return std::nullopt;
 }
 
-// Shows a piece of a line in a message: at most 40 characters, control bytes as '?'.
-std::string printable(std::string_view s)
-{
-  std::string shown(s.substr(0, 40));
-  for (char& c : shown)
-    if (static_cast<unsigned char>(c) < 0x20 || static_cast<unsigned char>(c) >= 0x7F) c = '?';
-  return shown;
-}
-
 std::vector<std::string_view> words(std::string_view line)
 {
   std::vector<std::string_view> out;
@@ -83,7 +74,7 @@ class HeaderParser {
         property(w);
       } else {
         const bool data = std::string_view("0123456789+-.").find(w[0][0]) != std::string_view::npos;
-        fail("'" + printable(w[0]) + "', which is not a PLY header keyword" +
+        fail("'" + plyExcerpt(w[0]) + "', which is not a PLY header keyword" +
              (data ? " (the 'end_header' line is missing before the data)" : ""));
       }
     }
@@ -116,8 +107,8 @@ class HeaderParser {
     else if (w[1] == "binary_big_endian")
       header_.encoding = PlyEncoding::BinaryBigEndian;
     else
-      fail("the format '" + printable(w[1]) + "', not ascii, binary_little_endian or binary_big_endian");
-    if (w[2] != "1.0" && w[2] != "1") fail("PLY version '" + printable(w[2]) + "'; Spira reads version 1.0");
+      fail("the format '" + plyExcerpt(w[1]) + "', not ascii, binary_little_endian or binary_big_endian");
+    if (w[2] != "1.0" && w[2] != "1") fail("PLY version '" + plyExcerpt(w[2]) + "'; Spira reads version 1.0");
   }
 
   void element(const std::vector<std::string_view>& w)
@@ -128,10 +119,10 @@ class HeaderParser {
     e.line = line_;
     const auto r = std::from_chars(w[2].data(), w[2].data() + w[2].size(), e.count);
     if (r.ec != std::errc() || r.ptr != w[2].data() + w[2].size())
-      fail("the count '" + printable(w[2]) + "' of element '" + printable(w[1]) +
+      fail("the count '" + plyExcerpt(w[2]) + "' of element '" + plyExcerpt(w[1]) +
            "', which is not a whole number of at most 2^64 - 1");
     for (const PlyElement& other : header_.elements)
-      if (other.name == e.name) fail("a second element named '" + printable(w[1]) + "'");
+      if (other.name == e.name) fail("a second element named '" + plyExcerpt(w[1]) + "'");
     header_.elements.push_back(std::move(e));
   }
 
@@ -143,7 +134,7 @@ class HeaderParser {
       p.isList = true;
       p.countType = typeOf(w[2]);
       if (!plyTypeIsInteger(p.countType))
-        fail("a list whose count type is '" + printable(w[2]) + "'; counts must have an integer type");
+        fail("a list whose count type is '" + plyExcerpt(w[2]) + "'; counts must have an integer type");
       p.type = typeOf(w[3]);
       p.name = std::string(w[4]);
     } else {
@@ -153,14 +144,14 @@ class HeaderParser {
     }
     PlyElement& e = header_.elements.back();
     if (e.find(p.name) >= 0)
-      fail("a second property '" + printable(p.name) + "' in element '" + printable(e.name) + "'");
+      fail("a second property '" + plyExcerpt(p.name) + "' in element '" + plyExcerpt(e.name) + "'");
     e.properties.push_back(std::move(p));
   }
 
   PlyType typeOf(std::string_view name) const
   {
     if (auto t = typeNamed(name)) return *t;
-    fail("the type '" + printable(name) +
+    fail("the type '" + plyExcerpt(name) +
          "', not one of char, uchar, short, ushort, int, uint, float, double (or int8 ... float64)");
   }
 
@@ -225,6 +216,14 @@ std::uint64_t PlyElement::minBinaryBytes() const
   std::uint64_t bytes = 0;
   for (const PlyProperty& p : properties) bytes += plyTypeSize(p.isList ? p.countType : p.type);
   return bytes;
+}
+
+std::string plyExcerpt(std::string_view text)
+{
+  std::string shown(text.substr(0, 40));
+  for (char& c : shown)
+    if (static_cast<unsigned char>(c) < 0x20 || static_cast<unsigned char>(c) >= 0x7F) c = '?';
+  return shown;
 }
 
 PlyHeader parsePlyHeader(std::string_view bytes, const std::string& source)

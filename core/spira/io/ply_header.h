@@ -47,6 +47,9 @@ struct PlyHeader {
 // end_header must not make the reader scan a whole large file for it.
 constexpr size_t kMaxPlyHeaderBytes = 64 * 1024;
 
+// At most 40 characters of file text for a message, control and non-ASCII bytes shown as '?'.
+std::string plyExcerpt(std::string_view text);
+
 // Parses and validates the header: the "ply" magic, one format line (version 1.0), element and
 // property lines, comment and obj_info lines, end_header. `source` names the file in messages.
 // Throws InputError naming the line and what is wrong.

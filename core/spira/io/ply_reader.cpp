@@ -23,13 +23,13 @@ std::string itemsOf(const PlyElement& e)
 {
   if (e.name == "vertex") return "vertices";
   if (e.name == "face") return "faces";
-  return "'" + e.name + "' items";
+  return "'" + plyExcerpt(e.name) + "' items";
 }
 
 std::string counted(const PlyElement& e)
 {
   if (e.count != 1) return std::to_string(e.count) + " " + itemsOf(e);
-  return "1 " + (e.name == "vertex" || e.name == "face" ? e.name : "'" + e.name + "' item");
+  return "1 " + (e.name == "vertex" || e.name == "face" ? e.name : "'" + plyExcerpt(e.name) + "' item");
 }
 
 std::string itemOf(const PlyElement& e, std::uint64_t index)
@@ -37,7 +37,7 @@ std::string itemOf(const PlyElement& e, std::uint64_t index)
   const std::string n = std::to_string(index);
   if (e.name == "vertex") return "vertex " + n;
   if (e.name == "face") return "face " + n;
-  return "item " + n + " of element '" + e.name + "'";
+  return "item " + n + " of element '" + plyExcerpt(e.name) + "'";
 }
 
 std::uint64_t saturatingMul(std::uint64_t a, std::uint64_t b)
@@ -166,7 +166,7 @@ class PlyParser {
       const PlyElement& e = header_.elements[i];
       if (e.properties.empty() || e.count == 0) continue;
       if (static_cast<int>(i) != vertex_ && static_cast<int>(i) != face_)
-        out_.warnings.push_back("'" + source_ + "': element '" + e.name + "' (" + counted(e) +
+        out_.warnings.push_back("'" + source_ + "': element '" + plyExcerpt(e.name) + "' (" + counted(e) +
                                 ") was ignored; Spira reads vertices and faces");
       for (std::uint64_t k = 0; k < e.count; ++k) {
         if (k % kCancelStride == 0) {
@@ -197,7 +197,7 @@ class PlyParser {
     const std::int64_t n = cursor.whole(p.countType);
     if (n < 0)
       throw InputError("'" + source_ + "' " + cursor.where() + ": " + itemOf(e, k) + " has a list '" +
-                           p.name + "' of " + std::to_string(n) + " values",
+                           plyExcerpt(p.name) + "' of " + std::to_string(n) + " values",
                        kCorruptHint);
     return static_cast<std::uint64_t>(n);
   }
@@ -303,12 +303,12 @@ class PlyParser {
                              " its PLY header declares (" + cursor.where() + ")",
                          "the file is truncated; export the part again");
       case PlyBodyProblem::ShortItem:
-        throw InputError(
-            at + itemOf(e, k) + " has fewer values than the header declares for element '" + e.name + "'",
-            kCorruptHint);
+        throw InputError(at + itemOf(e, k) + " has fewer values than the header declares for element '" +
+                             plyExcerpt(e.name) + "'",
+                         kCorruptHint);
       case PlyBodyProblem::LongItem:
         throw InputError(at + itemOf(e, k) + " has more values than the header declares for element '" +
-                             e.name + "' (from '" + problem.found + "' on)",
+                             plyExcerpt(e.name) + "' (from '" + problem.found + "' on)",
                          kCorruptHint);
       case PlyBodyProblem::NotNumber:
         throw InputError(at + "expected a number in " + itemOf(e, k) + ", found '" + problem.found + "'",
