@@ -4,7 +4,7 @@
 
 namespace spira::import_mesh {
 
-// import.obj and import.ply: one class, configured per format, reading through Assimp.
+// Formats read through Assimp (import.obj): one class, configured per format.
 class AssimpImporter final : public ImporterPlugin {
  public:
   AssimpImporter(std::string id, std::string label, std::string formatName,

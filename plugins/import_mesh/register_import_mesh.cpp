@@ -1,6 +1,7 @@
 #include <memory>
 
 #include "assimp_importer.h"
+#include "ply_importer.h"
 #include "spira/plugin/plugin_registry.h"
 #include "stl_importer.h"
 
@@ -10,6 +11,5 @@ void spira_register_import_mesh(spira::PluginRegistry& registry)
   registry.add(std::make_unique<spira::import_mesh::StlImporter>());
   registry.add(std::make_unique<AssimpImporter>("import.obj", "Wavefront OBJ mesh", "OBJ",
                                                 std::vector<std::string>{"obj"}));
-  registry.add(
-      std::make_unique<AssimpImporter>("import.ply", "PLY mesh", "PLY", std::vector<std::string>{"ply"}));
+  registry.add(std::make_unique<spira::import_mesh::PlyImporter>());
 }
