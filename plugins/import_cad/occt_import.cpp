@@ -16,6 +16,7 @@
 #include <Poly_Triangulation.hxx>
 #include <STEPControl_Reader.hxx>
 #include <Standard_Failure.hxx>
+#include <Standard_OutOfMemory.hxx>
 #include <StepShape_Face.hxx>
 #include <StepShape_OrientedFace.hxx>
 #include <TColStd_SequenceOfAsciiString.hxx>
@@ -29,6 +30,7 @@
 #include <cctype>
 #include <fstream>
 #include <mutex>
+#include <new>
 #include <thread>
 
 #include "spira/base/error.h"
@@ -316,6 +318,8 @@ CadMesh importCadFile(const std::filesystem::path& file, CadFormat format,
     tessellate(shape, settings, progress);
     const size_t meshed = collectTriangles(shape, progress, out);
     checkLostFaces(file, declared, meshed, out);
+  } catch (const Standard_OutOfMemory&) {
+    throw std::bad_alloc();
   } catch (const Standard_Failure& e) {
     throw unreadable(file, format, std::string("OpenCASCADE: ") + e.GetMessageString());
   }

@@ -86,11 +86,14 @@ int importHelperMain(int argc, char** argv, const PluginRegistry& registry)
                  "not by hand)\n";
     return 2;
   }
+  int status = 1;  // the parent is gone or the arguments are not Spira's: nobody left to tell
   try {
-    return runImporter(argv, registry);
+    status = runImporter(argv, registry);
   } catch (const std::exception&) {
-    return 1;  // the parent is gone or the arguments are not Spira's: nobody left to tell
   }
+  // The result is written: skip the libraries' exit handlers, which can hang once memory ran out
+  // (OpenBLAS joins a thread stuck on a failed mmap) and only cost time.
+  ::_exit(status);
 }
 
 }  // namespace spira

@@ -162,6 +162,7 @@ void Reader::feed(const char* data, size_t n, Progress& progress)
     const char tag = pending_[at];
     uint64_t length = 0;
     std::memcpy(&length, pending_.data() + at + 1, sizeof length);
+    if (!header_ && (tag != kHeader || length != kMagic.size())) malformed("no 'SPIRA-IMPORT/1' header");
     if (length > std::numeric_limits<size_t>::max() - kFrameHead - at) malformed("a frame length overflows");
     if (pending_.size() - at - kFrameHead < length) break;
     handle(tag, std::string_view(pending_).substr(at + kFrameHead, length), progress);

@@ -29,7 +29,8 @@ ImportedMesh readIsolated(const ImporterPlugin& importer, const std::filesystem:
 std::filesystem::path importHelperPath();
 
 // spira-import's main: `spira-import IMPORTER_ID FILE PARAMS_JSON MEMORY_BYTES CPU_SECONDS`,
-// the result on file descriptor 3, its messages (and OpenCASCADE's) on standard error.
+// the result on file descriptor 3, its messages (and OpenCASCADE's) on standard error. Once it has
+// run the importer it ends the process itself (_exit) instead of returning.
 int importHelperMain(int argc, char** argv, const PluginRegistry& registry);
 
 }  // namespace spira
