@@ -210,6 +210,29 @@ std::string signalName(int sig)
   return abbrev ? std::string(", SIG") + abbrev : std::string();
 }
 
+InputError timeLimit(const std::string& source, double seconds, const char* kind)
+{
+  std::ostringstream limit;
+  limit << seconds;
+  return InputError("reading '" + source + "' took longer than the import's " + kind + " limit of " +
+                        limit.str() + " s and was stopped",
+                    "the file is probably damaged; re-export it from the CAD program, or raise "
+                    "SPIRA_IMPORT_TIMEOUT_S if the part really is that large");
+}
+
+InputError stoppedWithoutResult(const std::string& what, const std::string& source, int status,
+                                const std::vector<std::string>& lines)
+{
+  std::string cause = WIFSIGNALED(status)
+                          ? "crashed on '" + source + "' (signal " + std::to_string(WTERMSIG(status)) +
+                                signalName(WTERMSIG(status)) + ")"
+                          : "stopped on '" + source + "' without a result (exit code " +
+                                std::to_string(WEXITSTATUS(status)) + ")";
+  cause += ": the file is damaged or uses entities Spira cannot read";
+  if (!lines.empty()) cause += "; the reader said: " + lines.front();
+  return InputError(what + cause, "re-export the part from the CAD program; for STEP choose AP214 or AP242");
+}
+
 }  // namespace
 
 ImportLimits ImportLimits::fromEnvironment()
@@ -263,14 +286,7 @@ ImportedMesh readIsolated(const ImporterPlugin& importer, const fs::path& file, 
     if (ready < 0 && errno != EINTR) throw IoError("waiting for the import helper failed", "try again");
     if (progress.cancelled()) throw Cancelled();  // ~Child kills the helper
     const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    if (elapsed > limits.wallSeconds) {
-      std::ostringstream limit;
-      limit << limits.wallSeconds;
-      throw InputError("reading '" + source + "' took longer than the import's time limit of " + limit.str() +
-                           " s and was stopped",
-                       "the file is probably damaged; re-export it from the CAD program, or raise "
-                       "SPIRA_IMPORT_TIMEOUT_S if the part really is that large");
-    }
+    if (elapsed > limits.wallSeconds) throw timeLimit(source, limits.wallSeconds, "time");
     for (int i = 0; i < 2; ++i) {
       if (fds[i].fd < 0 || !(fds[i].revents & (POLLIN | POLLHUP | POLLERR))) continue;
       const ssize_t n = ::read(fds[i].fd, buffer.data(), buffer.size());
@@ -290,14 +306,9 @@ ImportedMesh readIsolated(const ImporterPlugin& importer, const fs::path& file, 
   const std::vector<std::string> lines = logLines(logText);
   if (WIFSIGNALED(status) || !reader.complete()) {
     if (peakBytes >= limits.memoryBytes / 4 * 3) rethrow({wire::ErrorKind::Memory, {}, {}}, source, limits);
-    std::string cause = WIFSIGNALED(status)
-                            ? "crashed on '" + source + "' (signal " + std::to_string(WTERMSIG(status)) +
-                                  signalName(WTERMSIG(status)) + ")"
-                            : "stopped on '" + source + "' without a result (exit code " +
-                                  std::to_string(WEXITSTATUS(status)) + ")";
-    if (!lines.empty()) cause += "; it said: " + lines.front();
-    throw InputError(what + cause + ": the file is damaged or uses entities Spira cannot read",
-                     "re-export the part from the CAD program; for STEP choose AP214 or AP242");
+    if (WIFSIGNALED(status) && WTERMSIG(status) == SIGXCPU)
+      throw timeLimit(source, cpuSeconds, "processor time");
+    throw stoppedWithoutResult(what, source, status, lines);
   }
   if (reader.error()) rethrow(*reader.error(), source, limits);
   ImportedMesh mesh = std::move(*reader.mesh());
