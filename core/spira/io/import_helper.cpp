@@ -47,7 +47,9 @@ void limit(int resource, rlim_t value)
 
 int runImporter(char** argv, const PluginRegistry& registry)
 {
+#ifndef __SANITIZE_ADDRESS__  // AddressSanitizer's shadow memory alone is terabytes of address space
   limit(RLIMIT_AS, std::stoull(argv[4]));
+#endif
   limit(RLIMIT_CPU, std::stoull(argv[5]));
   limit(RLIMIT_CORE, 0);
   wire::Writer out(kResultFd);

@@ -13,6 +13,7 @@
 #include <chrono>
 #include <cstdlib>
 #include <cstring>
+#include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <thread>
@@ -29,6 +30,7 @@ namespace {
 
 constexpr size_t kMaxLogBytes = 64 * 1024;
 constexpr size_t kMaxLogWarnings = 5;
+constexpr double kPollSeconds = 0.05;  // how often cancel, time and memory are checked
 
 double envNumber(const char* name, double fallback)
 {
@@ -92,7 +94,15 @@ class Child {
       wait();
     }
   }
-  void kill() { ::kill(pid_, SIGKILL); }
+  // Resident memory now (bytes), 0 once unknown. Watched as well as the helper's own address-space
+  // limit, which builds with AddressSanitizer cannot set.
+  size_t residentBytes() const
+  {
+    std::ifstream statm("/proc/" + std::to_string(pid_) + "/statm");
+    size_t pages = 0, resident = 0;
+    if (!(statm >> pages >> resident)) return 0;
+    return resident * static_cast<size_t>(::sysconf(_SC_PAGE_SIZE));
+  }
   // The exit status and peak resident memory (bytes).
   std::pair<int, size_t> wait()
   {
@@ -280,13 +290,19 @@ ImportedMesh readIsolated(const ImporterPlugin& importer, const fs::path& file, 
   std::string logText;
   const auto start = std::chrono::steady_clock::now();
   std::vector<char> buffer(1 << 16);
+  double nextMemoryCheck = 0.0;
   while (result.read >= 0 || log.read >= 0) {
     pollfd fds[2] = {{result.read, POLLIN, 0}, {log.read, POLLIN, 0}};
-    const int ready = ::poll(fds, 2, 50);
+    const int ready = ::poll(fds, 2, static_cast<int>(kPollSeconds * 1000));
     if (ready < 0 && errno != EINTR) throw IoError("waiting for the import helper failed", "try again");
     if (progress.cancelled()) throw Cancelled();  // ~Child kills the helper
     const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (elapsed > limits.wallSeconds) throw timeLimit(source, limits.wallSeconds, "time");
+    if (elapsed >= nextMemoryCheck) {
+      nextMemoryCheck = elapsed + kPollSeconds;
+      if (child.residentBytes() > limits.memoryBytes)
+        rethrow({wire::ErrorKind::Memory, {}, {}}, source, limits);
+    }
     for (int i = 0; i < 2; ++i) {
       if (fds[i].fd < 0 || !(fds[i].revents & (POLLIN | POLLHUP | POLLERR))) continue;
       const ssize_t n = ::read(fds[i].fd, buffer.data(), buffer.size());
