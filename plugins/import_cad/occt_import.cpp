@@ -16,8 +16,12 @@
 #include <Poly_Triangulation.hxx>
 #include <STEPControl_Reader.hxx>
 #include <Standard_Failure.hxx>
+#include <Standard_OutOfMemory.hxx>
+#include <StepShape_Face.hxx>
+#include <StepShape_OrientedFace.hxx>
 #include <TColStd_SequenceOfAsciiString.hxx>
 #include <TopExp_Explorer.hxx>
+#include <TopTools_MapOfShape.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Face.hxx>
 #include <TopoDS_Shape.hxx>
@@ -26,6 +30,7 @@
 #include <cctype>
 #include <fstream>
 #include <mutex>
+#include <new>
 #include <thread>
 
 #include "spira/base/error.h"
@@ -147,7 +152,21 @@ void requestMillimetres()
   Interface_Static::SetCVal("xstep.cascade.unit", "MM");
 }
 
-TopoDS_Shape readStep(const std::filesystem::path& file, Progress& progress, CadMesh& out)
+// A face the file declares but whose references do not resolve is silently left out of the
+// transfer; counting the declared ones is how the loss is noticed. An oriented face only points
+// at another face.
+size_t declaredFaces(const STEPControl_Reader& reader)
+{
+  const Handle(Interface_InterfaceModel) model = reader.Model();
+  size_t n = 0;
+  for (Standard_Integer i = 1; i <= model->NbEntities(); ++i) {
+    const Handle(Standard_Transient)& e = model->Value(i);
+    if (e->IsKind(STANDARD_TYPE(StepShape_Face)) && !e->IsKind(STANDARD_TYPE(StepShape_OrientedFace))) ++n;
+  }
+  return n;
+}
+
+TopoDS_Shape readStep(const std::filesystem::path& file, Progress& progress, CadMesh& out, size_t& declared)
 {
   std::lock_guard<std::mutex> lock(transferMutex());
   STEPControl_Reader reader;
@@ -164,6 +183,7 @@ TopoDS_Shape readStep(const std::filesystem::path& file, Progress& progress, Cad
                              "' has no Spira name; the part was converted to millimetres");
   }
   if (reader.NbRootsForTransfer() == 0) throw unreadable(file, CadFormat::Step, "it contains no shape");
+  declared = declaredFaces(reader);
   Handle(ProgressBridge) bridge = new ProgressBridge(progress, "Reading STEP");
   reader.TransferRoots(bridge->Start());
   progress.checkCancel();
@@ -218,9 +238,12 @@ void tessellate(const TopoDS_Shape& shape, const TessellationSettings& settings,
     throw AlgorithmError("OpenCASCADE could not tessellate the part", "try a larger deflection");
 }
 
-void collectTriangles(const TopoDS_Shape& shape, Progress& progress, CadMesh& out)
+// Returns how many distinct faces were meshed: an instance placed twice counts once, as the file
+// declares it once.
+size_t collectTriangles(const TopoDS_Shape& shape, Progress& progress, CadMesh& out)
 {
   size_t missing = 0;
+  TopTools_MapOfShape meshed;
   for (TopExp_Explorer ex(shape, TopAbs_FACE); ex.More(); ex.Next()) {
     progress.checkCancel();
     const TopoDS_Face& face = TopoDS::Face(ex.Current());
@@ -230,6 +253,7 @@ void collectTriangles(const TopoDS_Shape& shape, Progress& progress, CadMesh& ou
       ++missing;
       continue;
     }
+    meshed.Add(face.Located(TopLoc_Location()));
     const gp_Trsf T = location.Transformation();
     // Triangles run counter-clockwise around the surface normal; a reversed face (or a mirroring
     // placement) points the other way in the solid, so its corners are swapped.
@@ -250,6 +274,23 @@ void collectTriangles(const TopoDS_Shape& shape, Progress& progress, CadMesh& ou
     out.warnings.push_back(std::to_string(missing) +
                            " CAD faces could not be tessellated and are missing from the mesh; check the "
                            "model for broken faces");
+  return static_cast<size_t>(meshed.Extent());
+}
+
+// Refuses a part that lost more than this fraction of its faces: what is left has holes the
+// planner would take for the part's own boundary.
+constexpr double kMaxLostFaceFraction = 0.05;
+
+void checkLostFaces(const std::filesystem::path& file, size_t declared, size_t meshed, CadMesh& out)
+{
+  if (meshed >= declared) return;
+  const std::string what = "'" + file.filename().string() + "' declares " + std::to_string(declared) +
+                           " faces but only " + std::to_string(meshed) +
+                           " could be read (unresolved or wrong-typed references)";
+  if (static_cast<double>(declared - meshed) > kMaxLostFaceFraction * static_cast<double>(declared))
+    throw InputError(what + "; the part would have holes where they were",
+                     "re-export the part from the CAD program as STEP AP214 or AP242");
+  out.warnings.push_back(what + "; the part has holes where they were");
 }
 
 }  // namespace
@@ -260,10 +301,11 @@ CadMesh importCadFile(const std::filesystem::path& file, CadFormat format,
   CadMesh out;
   try {
     TopoDS_Shape shape;
+    size_t declared = 0;
     checkSignature(file, format);
     switch (format) {
       case CadFormat::Step:
-        shape = readStep(file, progress, out);
+        shape = readStep(file, progress, out, declared);
         break;
       case CadFormat::Iges:
         shape = readIges(file, progress, out);
@@ -274,7 +316,10 @@ CadMesh importCadFile(const std::filesystem::path& file, CadFormat format,
     }
     if (shape.IsNull()) throw unreadable(file, format, "no shape could be transferred");
     tessellate(shape, settings, progress);
-    collectTriangles(shape, progress, out);
+    const size_t meshed = collectTriangles(shape, progress, out);
+    checkLostFaces(file, declared, meshed, out);
+  } catch (const Standard_OutOfMemory&) {
+    throw std::bad_alloc();
   } catch (const Standard_Failure& e) {
     throw unreadable(file, format, std::string("OpenCASCADE: ") + e.GetMessageString());
   }

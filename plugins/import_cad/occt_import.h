@@ -28,7 +28,9 @@ struct CadMesh {
 
 // Reads, transfers and tessellates with OpenCASCADE. Faces keep the orientation of the solid or
 // shell (reversed faces are flipped) and their locations are applied. Throws InputError for
-// unreadable or empty files, Cancelled when `progress` is cancelled.
+// unreadable or empty files and for a STEP file that lost more than 5 % of the faces it declares
+// (fewer: a warning), std::bad_alloc when OpenCASCADE runs out of memory, Cancelled when
+// `progress` is cancelled.
 CadMesh importCadFile(const std::filesystem::path& file, CadFormat format,
                       const TessellationSettings& settings, Progress& progress);
 

@@ -12,7 +12,7 @@ deb=$(ls "$work"/pkg/*.deb | head -1)
 info=$(dpkg-deb -I "$deb")  # captured first: grep -q closing the pipe early would fail it under pipefail
 grep -q "Package: spira" <<<"$info" || { echo "package metadata lacks 'Package: spira'"; exit 1; }
 dpkg-deb -x "$deb" "$work/root"
-need=(usr/bin/spira-cli usr/share/applications/spira.desktop usr/share/icons/hicolor/scalable/apps/spira.svg
+need=(usr/bin/spira-cli usr/bin/spira-import usr/share/applications/spira.desktop usr/share/icons/hicolor/scalable/apps/spira.svg
       usr/share/spira/samples/dome.stl usr/share/spira/samples/open_cylinder.stl usr/share/metainfo/org.spira.Spira.metainfo.xml)
 [ "$with_gui" = "ON" ] && need+=(usr/bin/spira)
 for f in "${need[@]}"; do
@@ -22,4 +22,6 @@ version=$("$work/root/usr/bin/spira-cli" --version)
 echo "$version"
 [[ "$version" == "spira-cli "* ]] || { echo "unexpected version output: $version"; exit 1; }
 "$work/root/usr/bin/spira-cli" info "$work/root/usr/share/spira/samples/dome.stl" >/dev/null
+# STEP is read by the packaged spira-import next to the packaged spira-cli.
+"$work/root/usr/bin/spira-cli" info "$(dirname "$0")/../data/hostile/step/unresolved_point.step" >/dev/null
 echo "package OK: $(basename "$deb")"

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "spira/base/error.h"
+#include "spira/io/isolated_import.h"
 #include "spira/io/unit_guess.h"
 
 namespace fs = std::filesystem;
@@ -110,10 +111,19 @@ bool isSoup(const TriangleMesh& mesh)
   return true;
 }
 
+// OpenCASCADE's readers crash, hang or exhaust memory on damaged files: they run in a helper
+// process so that only the helper dies.
+bool runsIsolated(const ImporterPlugin& importer)
+{
+  const std::string& id = importer.id();
+  return id == "import.step" || id == "import.iges" || id == "import.brep";
+}
+
 ImportedMesh readWith(const ImporterPlugin& importer, const fs::path& file, const ParamSet& params,
                       Progress& progress)
 {
   try {
+    if (runsIsolated(importer)) return readIsolated(importer, file, params, progress);
     return importer.read(file, params, progress);
   } catch (const Error&) {
     throw;

@@ -40,7 +40,9 @@ struct ImportedPart {
 // `importerParams` may be null (the importer's defaults) or partial (completed with them).
 // Throws IoError for a missing, unreadable or non-regular file; InputError for an unsupported
 // extension, invalid parameters, an unreadable format, an empty mesh or non-finite coordinates
-// (with their count and first position); Cancelled when `progress` is cancelled.
+// (with their count and first position), and when a third-party reader (OpenCASCADE, run in the
+// spira-import helper: see isolated_import.h) crashes or exceeds its limits; Cancelled when
+// `progress` is cancelled.
 ImportedPart importPart(const PluginRegistry& registry, const std::filesystem::path& file,
                         const ParamSet* importerParams, Progress& progress);
 

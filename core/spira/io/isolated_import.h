@@ -1,0 +1,36 @@
+#pragma once
+
+#include <filesystem>
+#include <string>
+
+#include "spira/base/progress.h"
+#include "spira/plugin/importer.h"
+#include "spira/plugin/plugin_registry.h"
+
+namespace spira {
+
+// What the import helper may use before the parent gives up on it. Defaults: the smaller of
+// 4 GB and half the physical memory, 120 s of wall-clock time; the environment variables
+// SPIRA_IMPORT_MEMORY_MB and SPIRA_IMPORT_TIMEOUT_S override them.
+struct ImportLimits {
+  size_t memoryBytes = 0;
+  double wallSeconds = 0.0;
+  static ImportLimits fromEnvironment();
+};
+
+// Runs `importer` on `file` in the spira-import helper process, so that a crash, an abort, a
+// hang or a memory blow-up in a third-party parser becomes an InputError naming the file. The
+// helper's own messages come back as warnings. Cancelling `progress` kills the helper.
+ImportedMesh readIsolated(const ImporterPlugin& importer, const std::filesystem::path& file,
+                          const ParamSet& params, Progress& progress);
+
+// The helper: next to the running executable, else the build tree's one; throws IoError when
+// neither exists.
+std::filesystem::path importHelperPath();
+
+// spira-import's main: `spira-import IMPORTER_ID FILE PARAMS_JSON MEMORY_BYTES CPU_SECONDS`,
+// the result on file descriptor 3, its messages (and OpenCASCADE's) on standard error. Once it has
+// run the importer it ends the process itself (_exit) instead of returning.
+int importHelperMain(int argc, char** argv, const PluginRegistry& registry);
+
+}  // namespace spira
