@@ -187,7 +187,7 @@ int cmdExport(const std::vector<std::string>& argv)
   }
   const std::string outDir = args.takeOption("-o");
   const std::string cellFile = args.takeOption("--cell");
-  args.rest = consumeParamFlags(args.rest, targets);
+  args.rest = takeParamFlags(args.rest, targets);
   const auto positional = args.finish("export", 1, 1);
   if (format.empty())
     throw UsageError("'export' needs a program format",

@@ -123,7 +123,7 @@ int cmdPlan(const std::vector<std::string>& argv)
   const bool timing = args.takeSwitch("--timing");
   const bool keepCollisions = args.takeSwitch("--keep-collisions");
   const bool noMidSurface = args.takeSwitch("--no-mid-surface");
-  args.rest = consumeParamFlags(args.rest, targets);
+  args.rest = takeParamFlags(args.rest, targets);
   const auto positional = args.finish("plan", 1, 1);
   if (outDir.empty()) throw UsageError("'plan' needs an output folder", "write -o DIR");
   if (strategy.empty()) strategy = "isovalue";
