@@ -4,11 +4,11 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
-#include <fstream>
 #include <functional>
 #include <numeric>
 #include <sstream>
 
+#include "spira/base/atomic_file.h"
 #include "spira/base/error.h"
 
 namespace spira {
@@ -153,9 +153,7 @@ CalibrationTable parseCalibrationCsv(std::istream& in, const std::string& source
 
 CalibrationTable readCalibrationCsv(const std::string& path)
 {
-  std::ifstream in(path);
-  if (!in)
-    throw IoError("cannot open the calibration table " + path, "check the path and the file's permissions");
+  std::istringstream in(readFile(path));
   return parseCalibrationCsv(in, path);
 }
 
