@@ -253,7 +253,7 @@ TEST(Weld, OneStrayFarVertexDoesNotCollapseThePart)
   WeldStats stats;
   const TriangleMesh welded = weldTriangleSoup(soup, kDefaultWeldTolerance, &stats);
   EXPECT_EQ(welded.vertexCount(), hemi.vertexCount() + 1);
-  EXPECT_LT(stats.tolerance, 0.2);
+  EXPECT_LT(stats.tolerance, 0.01);
   expectSameTriangles(welded, soup);
   // The same through weldVertices.
   TriangleMesh indexed = hemi;

@@ -198,9 +198,10 @@ std::vector<std::pair<int, int>> nearPairs(const Vec3* p, const std::vector<int>
   return pairs;
 }
 
-// The weld never spans more than this share of the mesh's typical (median) edge: the bounding box
-// alone would let one stray vertex far away make the tolerance as long as whole triangles.
-constexpr double kEdgeShare = 0.05;
+// The size the relative tolerance applies to is the bounding-box diagonal, but at most this many
+// typical (median) edges: one stray vertex far away would otherwise make the tolerance as long as
+// whole triangles. Real parts span far fewer edges than this, so their tolerance is unchanged.
+constexpr double kMaxSizeInEdges = 1e4;
 // Edges sampled for the median: enough for a steady estimate, few enough to cost nothing.
 constexpr size_t kEdgeSamples = size_t{1} << 16;
 
@@ -228,13 +229,13 @@ struct PointWeld {
   double tolerance = 0.0;
 };
 
-// Clusters points closer than relTol * (bounding-box diagonal), but at most kEdgeShare * `medianEdge`,
+// Clusters points closer than relTol * min(bounding-box diagonal, kMaxSizeInEdges * `medianEdge`),
 // transitively. Output vertices are numbered in order of their first point and sit exactly at that point.
 PointWeld weldPoints(const Vec3* p, size_t n, double relTol, double medianEdge)
 {
   PointWeld w;
   const BoundingBox box = finiteBounds(p, n);
-  w.tolerance = box.empty() ? 0.0 : std::min(relTol * box.diagonal(), kEdgeShare * medianEdge);
+  w.tolerance = box.empty() ? 0.0 : relTol * std::min(box.diagonal(), kMaxSizeInEdges * medianEdge);
   BigVector<int> rep = exactDuplicates(p, n);
 
   if (w.tolerance > 0.0) {
