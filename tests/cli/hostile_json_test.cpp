@@ -4,12 +4,15 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <memory>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
 
 #include "cell_variant.h"
 #include "cli_runner.h"
+#include "spira/document/document.h"
+#include "spira/planning/trajectory_csv_reader.h"
 #include "support/test_support.h"
 
 namespace fs = std::filesystem;
@@ -111,6 +114,21 @@ TEST_F(HostileReport, SyntaxErrorGivesLineAndColumn)
   EXPECT_EQ(r.exitCode, 3) << r.err;
   EXPECT_TRUE(has(r.err, "report.json, line 3, column 22: unexpected '4'")) << r.err;
   EXPECT_FALSE(has(r.err, "json.exception")) << r.err;
+}
+
+TEST_F(HostileReport, ProjectsStoredReportOfTheWrongTypeIsNamed)
+{
+  Document doc;
+  doc.setProcess(std::make_shared<const Trajectory>(readTrajectoryCsv(*dir_ / "plan" / "trajectory.csv")),
+                 std::make_shared<const nlohmann::json>(nlohmann::json{{"path_length", "long"}}));
+  const fs::path project = tmp_ / "wall.spira";
+  doc.saveAs(project);
+  const CliRun r = runCli({"export", project.string(), "--format", "krl", "-o", (tmp_ / "program").string()});
+  EXPECT_EQ(r.exitCode, 3) << r.err;
+  EXPECT_TRUE(has(r.err, project.string() +
+                             " (the plan's report): field 'path_length' must be a number, found "
+                             "the string \"long\""))
+      << r.err;
 }
 
 TEST(HostileCell, NumberBeyondDoubleRangeIsBadInputWithItsPlace)
