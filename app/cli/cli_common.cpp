@@ -1,5 +1,8 @@
 #include "cli_common.h"
 
+#include "spira/base/error.h"
+#include "spira/base/number_text.h"
+
 namespace spira::cli {
 
 bool Args::takeSwitch(const std::string& name)
@@ -55,6 +58,36 @@ Args splitArgs(const std::vector<std::string>& args)
   Args a;
   a.rest = args;
   return a;
+}
+
+std::vector<std::string> takeParamFlags(const std::vector<std::string>& rest,
+                                        const std::vector<FlagTarget>& targets)
+{
+  try {
+    return consumeParamFlags(rest, targets);
+  } catch (const InputError& e) {
+    throw UsageError(e.what(), e.hint());
+  }
+}
+
+double finiteNumberFlag(const std::string& flag, const std::string& text, const std::string& example)
+{
+  std::string problem;
+  const auto x = parseFiniteNumber(text, problem);
+  if (!x) throw UsageError(flag + ": '" + clippedText(text) + "' " + problem, example);
+  return *x;
+}
+
+long long wholeNumberFlag(const std::string& flag, const std::string& text, long long min, long long max,
+                          const std::string& example)
+{
+  std::string problem;
+  const auto n = parseWholeNumber(text, problem);
+  if (n && (*n < min || *n > max))
+    problem = "is out of range (" + std::to_string(min) + " to " + std::to_string(max) + ")";
+  if (!n || *n < min || *n > max)
+    throw UsageError(flag + ": '" + clippedText(text) + "' " + problem, example);
+  return *n;
 }
 
 }  // namespace spira::cli

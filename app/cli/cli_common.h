@@ -4,6 +4,8 @@
 #include <string>
 #include <vector>
 
+#include "spira/plugin/param_cli.h"
+
 namespace spira::cli {
 
 // Exit codes of spira-cli, documented in README.md.
@@ -33,6 +35,17 @@ struct Args {
 };
 
 Args splitArgs(const std::vector<std::string>& args);
+
+// The plugin parameter flags (--h 2, --points-per-rev 360) taken from `rest` into `targets`; the rest
+// returned. A missing, malformed or out-of-range value is a usage error, as for every other flag.
+std::vector<std::string> takeParamFlags(const std::vector<std::string>& rest,
+                                        const std::vector<FlagTarget>& targets);
+
+// The value of a numeric flag: a finite number, or a whole number in [min, max]; anything else is a
+// usage error naming the flag, what is wrong and `example`.
+double finiteNumberFlag(const std::string& flag, const std::string& text, const std::string& example);
+long long wholeNumberFlag(const std::string& flag, const std::string& text, long long min, long long max,
+                          const std::string& example);
 
 int cmdInfo(const std::vector<std::string>& args);
 int cmdPlugins(const std::vector<std::string>& args);

@@ -77,7 +77,7 @@ int cmdCompare(const std::vector<std::string>& argv)
   }
   const std::string outDir = args.takeOption("-o");
   const PartPlacement placement = PartPlacement::take(args);
-  args.rest = consumeParamFlags(args.rest, targets);
+  args.rest = takeParamFlags(args.rest, targets);
   const auto positional = args.finish("compare", 1, 1);
   if (outDir.empty()) throw UsageError("'compare' needs an output folder", "write -o DIR");
   ensureWritableDirectory(outDir);

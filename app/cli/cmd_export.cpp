@@ -12,6 +12,7 @@
 #include "spira/base/output_set.h"
 #include "spira/document/cell_file.h"
 #include "spira/document/document.h"
+#include "spira/document/json_read.h"
 #include "spira/pipeline/plan_motion.h"
 #include "spira/pipeline/prep_schema.h"
 #include "spira/pipeline/sub_paths.h"
@@ -27,16 +28,17 @@ namespace fs = std::filesystem;
 
 constexpr const char* kCsvFormat = "csv";
 
+constexpr const char* kReplanHint = "plan the part again with spira-cli plan";
+
 nlohmann::json readPlanReport(const fs::path& planDir)
 {
   const fs::path file = planDir / "report.json";
   if (!fs::exists(file)) return nlohmann::json::object();
-  try {
-    return nlohmann::json::parse(readFile(file));
-  } catch (const nlohmann::json::exception& e) {
-    throw InputError(file.string() + " is not valid JSON: " + e.what(),
-                     "plan the part again with spira-cli plan");
-  }
+  nlohmann::json report = json_read::parse(readFile(file), file.string(), kReplanHint);
+  if (!report.is_object())
+    throw InputError(file.string() + ": expected a JSON object, found " + json_read::describe(report),
+                     kReplanHint);
+  return report;
 }
 
 // What is exported: the planned trajectory, the cell it was planned for (if any), the values the
@@ -47,6 +49,7 @@ struct ExportSource {
   std::string cellName;  // for the header: a file name or the project's cell name
   std::string partName;
   nlohmann::json report = nlohmann::json::object();
+  std::string reportName;  // where the report was read from, for messages
   PlanSettings settings;
   std::vector<bool> plannedCollision;  // from the plan's joints.csv: points it left in collision
   Transform placement =
@@ -92,6 +95,7 @@ ExportSource projectSource(const fs::path& file)
   for (Stage stage : {Stage::Spiral, Stage::Process, Stage::Kinematics})
     if (const auto& r = doc.results().report(stage); r && r->is_object())
       for (const auto& [key, value] : r->items()) s.report[key] = value;
+  s.reportName = file.string() + " (the plan's report)";
   if (doc.settings()) s.settings = *doc.settings();
   return s;
 }
@@ -102,8 +106,9 @@ ExportSource planFolderSource(const fs::path& dir)
   ExportSource s;
   verifyOutputSet(dir);
   s.report = readPlanReport(dir);
-  s.partName = s.report.value("part", dir.filename().string());
-  const std::string cellFile = s.report.value("cell_file", "");
+  s.reportName = (dir / "report.json").string();
+  s.partName = json_read::text(s.report, "part", dir.filename().string(), s.reportName, kReplanHint);
+  const std::string cellFile = json_read::text(s.report, "cell_file", "", s.reportName, kReplanHint);
   if (!cellFile.empty()) {
     s.cell = readCellFile(cellFile);
     s.cellName = cellFile;
@@ -186,7 +191,7 @@ int cmdExport(const std::vector<std::string>& argv)
   }
   const std::string outDir = args.takeOption("-o");
   const std::string cellFile = args.takeOption("--cell");
-  args.rest = consumeParamFlags(args.rest, targets);
+  args.rest = takeParamFlags(args.rest, targets);
   const auto positional = args.finish("export", 1, 1);
   if (format.empty())
     throw UsageError("'export' needs a program format",
@@ -226,7 +231,7 @@ int cmdExport(const std::vector<std::string>& argv)
   job.prep = prepParamsFrom(merged(source.settings.section("prep"), prepValues));
   job.cell = cell ? &*cell : nullptr;
   job.plannedCollision = source.plannedCollision;
-  job.header = programHeader(source.partName, source.cellName, source.report);
+  job.header = programHeader(source.partName, source.cellName, source.report, source.reportName);
   NullProgress progress;
   const ExportOutcome exported = exportTrajectory(registry, source.trajectory, job, outDir, progress);
   printExportSummary(exported, std::cout);

@@ -57,7 +57,7 @@ int cmdField(const std::vector<std::string>& argv)
   const std::string out = args.takeOption("-o");
   std::string kind = args.takeOption("--kind");
   std::string sources = args.takeOption("--sources");
-  args.rest = consumeParamFlags(args.rest, importFlags.targets());
+  args.rest = takeParamFlags(args.rest, importFlags.targets());
   const auto positional = args.finish("field", 1, 1);
   if (out.empty()) throw UsageError("'field' needs an output file", "write -o FILE.csv or -o FILE.vtp");
   if (kind.empty()) kind = "geodesic";

@@ -185,7 +185,7 @@ int cmdInfo(const std::vector<std::string>& argv)
   const bool json = args.takeSwitch("--json");
   const bool timing = args.takeSwitch("--timing");
   const bool skeleton = args.takeSwitch("--skeleton");
-  args.rest = consumeParamFlags(args.rest, flags.targets());
+  args.rest = takeParamFlags(args.rest, flags.targets());
   const auto positional = args.finish("info", 1, 1);
   const std::string& file = positional[0];
 

@@ -15,15 +15,7 @@ std::array<double, 6> sixNumbers(const std::vector<std::string>& words, const st
 {
   if (words.size() != 6) throw UsageError(flag + " takes six numbers", "e.g. " + flag + " 0 -90 90 0 0 0");
   std::array<double, 6> v{};
-  for (size_t i = 0; i < 6; ++i) {
-    try {
-      size_t used = 0;
-      v[i] = std::stod(words[i], &used);
-      if (used != words[i].size()) throw std::invalid_argument(words[i]);
-    } catch (const std::exception&) {
-      throw UsageError(flag + ": '" + words[i] + "' is not a number", "give six numbers");
-    }
-  }
+  for (size_t i = 0; i < 6; ++i) v[i] = finiteNumberFlag(flag, words[i], "give six numbers");
   return v;
 }
 

@@ -124,7 +124,7 @@ int cmdPlan(const std::vector<std::string>& argv)
   const bool timing = args.takeSwitch("--timing");
   const bool keepCollisions = args.takeSwitch("--keep-collisions");
   const bool noMidSurface = args.takeSwitch("--no-mid-surface");
-  args.rest = consumeParamFlags(args.rest, targets);
+  args.rest = takeParamFlags(args.rest, targets);
   const auto positional = args.finish("plan", 1, 1);
   if (outDir.empty()) throw UsageError("'plan' needs an output folder", "write -o DIR");
   if (strategy.empty()) strategy = "isovalue";
@@ -208,7 +208,7 @@ int cmdPlan(const std::vector<std::string>& argv)
     job.cell = cell ? &*cell : nullptr;
     if (motion)  // unresolved collisions of the plan are flagged in the program (refused unless forced)
       for (const JointPoint& p : motion->joints.points) job.plannedCollision.push_back(p.collision);
-    job.header = programHeader(positional[0], cellFile, report);
+    job.header = programHeader(positional[0], cellFile, report, "the plan's report");
     const ExportOutcome exported = exportTrajectory(registry, finalPath, job, outDir, progress);
     printExportSummary(exported, std::cout);
     plan.timings.push_back({"export", exported.seconds});

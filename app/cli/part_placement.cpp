@@ -13,27 +13,21 @@ namespace {
 
 int parseLoop(const std::string& text)
 {
-  const bool digits =
-      !text.empty() && text.size() <= 6 && text.find_first_not_of("0123456789") == std::string::npos;
-  const int n = digits ? std::stoi(text) : 0;
-  if (n < 1)
-    throw UsageError(
-        "--lower-loop takes a loop number from 1, as 'spira-cli info' lists the loops; got '" + text + "'",
-        "e.g. --lower-loop 1, or leave it out to stand the part on its lowest loop");
-  return n - 1;
+  constexpr long long kMaxLoop = 999999;
+  return static_cast<int>(
+             wholeNumberFlag("--lower-loop", text, 1, kMaxLoop,
+                             "a loop number from 1, as 'spira-cli info' lists the loops, e.g. "
+                             "--lower-loop 1, or leave it out to stand the part on its lowest loop")) -
+         1;
 }
 
 double parseZ(const std::string& text)
 {
-  size_t used = 0;
-  double z = 0.0;
-  try {
-    z = std::stod(text, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (used == 0 || used != text.size() || !std::isfinite(z) || std::abs(z) > 1e6)
-    throw UsageError("--substrate-z takes a height in mm; got '" + text + "'", "e.g. --substrate-z 0");
+  constexpr double kMaxZ = 1e6;
+  const char* example = "a height in mm, e.g. --substrate-z 0";
+  const double z = finiteNumberFlag("--substrate-z", text, example);
+  if (std::abs(z) > kMaxZ)
+    throw UsageError("--substrate-z: '" + text + "' is out of range (-1e6 to 1e6 mm)", example);
   return z;
 }
 

@@ -15,18 +15,9 @@ constexpr int kMaxThreads = 256;
 
 int parseThreadCount(const std::string& text, const std::string& source)
 {
-  size_t used = 0;
-  int n = 0;
-  try {
-    n = std::stoi(text, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (used == 0 || used != text.size() || n < 1 || n > kMaxThreads)
-    throw UsageError(source + " takes a whole number of threads from 1 to " + std::to_string(kMaxThreads) +
-                         ", not '" + text + "'",
-                     "e.g. --threads 1 (SPIRA_THREADS=1), or leave it out to use every core");
-  return n;
+  return static_cast<int>(wholeNumberFlag(source, text, 1, kMaxThreads,
+                                          "a whole number of threads, e.g. --threads 1 (SPIRA_THREADS=1), or "
+                                          "leave it out to use every core"));
 }
 
 }  // namespace

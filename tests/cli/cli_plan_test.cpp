@@ -262,21 +262,23 @@ TEST(CliPlan, BadSettingsAreRejectedBeforeAnythingIsWritten)
   TempDir dir;
   writeBytes(dir / "nonmono.csv", "height_mm,travel_speed_mm_s\n1.8,3.0\n2.0,3.5\n2.2,2.5\n");
   const std::string part = sample("open_cylinder.stl").string();
-  const std::vector<std::vector<std::string>> cases = {
-      {"--h-min", "2.2", "--h-max", "1.8"},
-      {"--h", "3", "--h-min", "1.8", "--h-max", "2.2"},
-      {"--wfs", "-1"},
-      {"--ts", "0"},
-      {"--calibration", (dir / "nonmono.csv").string()},
-      {"--calibration", (dir / "missing.csv").string()},
-      {"--strategy", "nonexistent"},
+  // A flag's value outside its range is a usage error (2); values that do not fit together, or a bad
+  // file, are bad input (3).
+  const std::vector<std::pair<std::vector<std::string>, int>> cases = {
+      {{"--h-min", "2.2", "--h-max", "1.8"}, 3},
+      {{"--h", "3", "--h-min", "1.8", "--h-max", "2.2"}, 3},
+      {{"--wfs", "-1"}, 2},
+      {{"--ts", "0"}, 2},
+      {{"--calibration", (dir / "nonmono.csv").string()}, 3},
+      {{"--calibration", (dir / "missing.csv").string()}, 3},
+      {{"--strategy", "nonexistent"}, 3},
   };
-  for (const auto& extra : cases) {
+  for (const auto& [extra, exitCode] : cases) {
     const auto out = dir / "out";
     std::vector<std::string> args = {"plan", part, "-o", out.string()};
     args.insert(args.end(), extra.begin(), extra.end());
     const CliRun r = runCli(args);
-    EXPECT_EQ(r.exitCode, 3) << extra[0] << ": " << r.err;
+    EXPECT_EQ(r.exitCode, exitCode) << extra[0] << ": " << r.err;
     EXPECT_FALSE(fs::exists(out / "report.json")) << extra[0];
     EXPECT_FALSE(fs::exists(out / "trajectory.csv")) << extra[0];
     EXPECT_NE(r.err.find(" ("), std::string::npos) << "no hint: " << r.err;

@@ -110,3 +110,78 @@ TEST(TrajectoryCsvReader, BadFilesNameTheLine)
 
 }  // namespace
 }  // namespace spira
+
+namespace spira {
+namespace {
+
+// The CSV of awkwardTrajectory() with the value of `column` (0-based) on data row `row` (0-based)
+// replaced by `value`.
+std::string withCell(size_t row, int column, const std::string& value)
+{
+  std::string text = trajectoryCsv(awkwardTrajectory());
+  size_t start = text.find('\n') + 1;
+  for (size_t r = 0; r < row; ++r) start = text.find('\n', start) + 1;
+  for (int c = 0; c < column; ++c) start = text.find(',', start) + 1;
+  const size_t end = text.find_first_of(",\n", start);
+  text.replace(start, end - start, value);
+  return text;
+}
+
+std::string refusal(const std::string& text)
+{
+  try {
+    trajectoryFromCsv(text, "plan/trajectory.csv");
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "accepted";
+}
+
+TEST(TrajectoryCsvValidation, PathNumbersGoUpByOneFromZero)
+{
+  // Row 30 is on path 1 (rows 20..39); a 0 there goes back, a 3 skips.
+  EXPECT_EQ(
+      refusal(withCell(30, 19, "0")),
+      "plan/trajectory.csv line 32: column 20 (path) must stay 1 or go on to 2 (sub-paths are numbered in "
+      "order from 0), found 0");
+  EXPECT_NE(refusal(withCell(30, 19, "3")).find("line 32: column 20 (path) must stay 1 or go on to 2"),
+            std::string::npos);
+  EXPECT_NE(refusal(withCell(0, 19, "1")).find("line 2: column 20 (path) must be 0 on the first row"),
+            std::string::npos);
+  EXPECT_NE(refusal(withCell(5, 19, "-1")).find("line 7: column 20 (path) must be a sub-path number"),
+            std::string::npos);
+}
+
+TEST(TrajectoryCsvValidation, SpeedsArePositiveOnEveryRow)
+{
+  EXPECT_EQ(refusal(withCell(17, 16, "0")),
+            "plan/trajectory.csv line 19: column 17 (ts) must be a positive travel speed in mm/s, found 0");
+  EXPECT_NE(refusal(withCell(3, 16, "-5")).find("line 5: column 17 (ts) must be a positive"),
+            std::string::npos);
+  EXPECT_NE(refusal(withCell(3, 17, "0")).find("line 5: column 18 (wfs) must be a positive wire-feed speed"),
+            std::string::npos);
+  // Row 49 has the arc off: no wire is fed, so 0 is fine, a negative speed is not.
+  EXPECT_EQ(refusal(withCell(49, 17, "0")), "accepted");
+  EXPECT_NE(refusal(withCell(49, 17, "-1")).find("line 51: column 18 (wfs) must not be negative"),
+            std::string::npos);
+}
+
+TEST(TrajectoryCsvValidation, EveryValueIsFiniteAndNamed)
+{
+  EXPECT_EQ(refusal(withCell(10, 2, "inf")),
+            "plan/trajectory.csv line 12: column 3 (y) is not a finite number, "
+            "found 'inf'");
+  EXPECT_NE(refusal(withCell(10, 15, "nan")).find("line 12: column 16 (height) is not a finite number"),
+            std::string::npos);
+  EXPECT_NE(refusal(withCell(10, 18, "2")).find("line 12: column 19 (arc) must be 0 or 1, found 2"),
+            std::string::npos);
+  EXPECT_NE(refusal(withCell(10, 13, "1.5")).find("line 12: column 14 (rev) must be a whole number from 0"),
+            std::string::npos);
+  const std::string huge(5000, '9');
+  const std::string clipped = refusal(withCell(10, 1, huge + "x"));
+  EXPECT_NE(clipped.find("found '" + std::string(60, '9') + "...'"), std::string::npos) << clipped.size();
+  EXPECT_LT(clipped.size(), 200u);
+}
+
+}  // namespace
+}  // namespace spira

@@ -403,3 +403,27 @@ TEST(Validate, TextAndJsonCarryTheFindings)
   EXPECT_NE(clean.find("Issues: none"), std::string::npos);
   EXPECT_NE(clean.find("Part class: open - 2 boundary loops"), std::string::npos);
 }
+
+TEST(Validate, ASingleTriangleIsNoWall)
+{
+  TriangleMesh m;
+  m.vertices = {Vec3(0, 0, 0), Vec3(10, 0, 0), Vec3(0, 0, 10)};
+  m.faces = {{0, 1, 2}};
+  const MeshReport r = validateMesh(m);
+  EXPECT_EQ(r.boundaryLoops.size(), 1u);
+  EXPECT_EQ(r.partClass, PartClass::Unsupported);
+  EXPECT_NE(r.classReason.find("every vertex lies on the part's one boundary edge"), std::string::npos)
+      << r.classReason;
+}
+
+TEST(Validate, AMeshCollapsedToALineHasNoSurface)
+{
+  TriangleMesh m;
+  m.vertices = {Vec3(0, 0, 0), Vec3(10, 0, 0), Vec3(20, 0, 0), Vec3(30, 0, 0)};
+  m.faces = {{0, 1, 2}, {0, 2, 3}};
+  const MeshReport r = validateMesh(m);
+  EXPECT_EQ(r.issueCount(MeshIssueKind::DegenerateFace), 2u);
+  EXPECT_FALSE(r.isPlannable());
+  EXPECT_EQ(r.partClass, PartClass::Unsupported);
+  EXPECT_NE(r.classReason.find("all 2 faces are degenerate"), std::string::npos) << r.classReason;
+}

@@ -242,3 +242,22 @@ TEST(Weld, LargeSoupFromManyPartitionsWeldsExactly)
   expectSameTriangles(welded, soup);
   EXPECT_EQ(validateMesh(welded).partClass, PartClass::Open);
 }
+
+TEST(Weld, OneStrayFarVertexDoesNotCollapseThePart)
+{
+  // A hemisphere (edges about 2 mm) plus one sliver triangle reaching out to x = 1e9: the bounding
+  // box alone would make the tolerance 1e-7 * 1e9 = 100 mm and weld the hemisphere to a point.
+  const TriangleMesh hemi = makeHemisphere(10.0, 32, 8);
+  std::vector<Vec3> soup = test::soupOf(hemi);
+  soup.insert(soup.end(), {hemi.vertices[0], hemi.vertices[1], Vec3(1e9, 0, 0)});
+  WeldStats stats;
+  const TriangleMesh welded = weldTriangleSoup(soup, kDefaultWeldTolerance, &stats);
+  EXPECT_EQ(welded.vertexCount(), hemi.vertexCount() + 1);
+  EXPECT_LT(stats.tolerance, 0.01);
+  expectSameTriangles(welded, soup);
+  // The same through weldVertices.
+  TriangleMesh indexed = hemi;
+  indexed.vertices.push_back(Vec3(1e9, 0, 0));
+  indexed.faces.push_back(Face{0, 1, static_cast<int>(hemi.vertexCount())});
+  EXPECT_EQ(weldVertices(indexed).vertexCount(), hemi.vertexCount() + 1);
+}

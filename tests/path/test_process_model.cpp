@@ -306,3 +306,35 @@ TEST(ProcessModel, PointsWithoutHeightKeepTheNeighbourSpeeds)
     flagged += v.kind == ProcessViolationKind::HeightNotPositive;
   EXPECT_EQ(flagged, 2u);
 }
+
+namespace spira {
+namespace {
+
+std::string calibrationRefusal(const std::string& text)
+{
+  std::istringstream in(text);
+  try {
+    parseCalibrationCsv(in, "beads.csv");
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "accepted";
+}
+
+TEST(CalibrationTableInput, AHugeBadCellIsQuotedClipped)
+{
+  const std::string huge(1 << 20, 'x');
+  const std::string message = calibrationRefusal("height_mm,travel_speed_mm_s\n1.8," + huge + "\n");
+  EXPECT_EQ(message, "beads.csv, line 2: '" + std::string(60, 'x') + "...' is not a number");
+}
+
+TEST(CalibrationTableInput, NonFiniteAndOverflowingNumbersAreNamed)
+{
+  EXPECT_EQ(calibrationRefusal("height_mm,travel_speed_mm_s\n1.8,inf\n"),
+            "beads.csv, line 2: 'inf' is not a finite number");
+  EXPECT_EQ(calibrationRefusal("height_mm,travel_speed_mm_s\n1e999,3\n"),
+            "beads.csv, line 2: '1e999' is beyond the range of a double (about 1.8e308)");
+}
+
+}  // namespace
+}  // namespace spira

@@ -99,12 +99,21 @@ void ensureWritableDirectory(const fs::path& dir)
   fs::remove(probe, ec);
 }
 
-std::string readFile(const fs::path& path)
+void requireRegularFile(const fs::path& path)
 {
   std::error_code ec;
-  if (!fs::exists(path, ec)) throw IoError("file '" + path.string() + "' does not exist", "check the path");
-  if (fs::is_directory(path, ec))
+  const fs::file_status status = fs::status(path, ec);
+  if (!fs::exists(status)) throw IoError("file '" + path.string() + "' does not exist", "check the path");
+  if (fs::is_directory(status))
     throw IoError("'" + path.string() + "' is a folder, not a file", "give a file");
+  if (!fs::is_regular_file(status))
+    throw IoError("'" + path.string() + "' is not a regular file (it is a named pipe, a device or a socket)",
+                  "give a file saved on disk");
+}
+
+std::string readFile(const fs::path& path)
+{
+  requireRegularFile(path);
   std::ifstream in(path, std::ios::binary);
   if (!in) throw IoError("cannot open '" + path.string() + "' for reading", "check the file's permissions");
   std::string data;

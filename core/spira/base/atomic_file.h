@@ -19,7 +19,12 @@ std::string writeSynced(const std::filesystem::path& path, std::string_view byte
 // Call it before starting work whose output would otherwise be lost at the end.
 void ensureWritableDirectory(const std::filesystem::path& dir);
 
-// Reads a whole file; throws IoError if it is missing or unreadable.
+// Throws IoError naming `path` unless it is a regular file once symbolic links are followed: a
+// folder, a named pipe, a device or a socket is refused before anything opens it (a pipe would block
+// the reader forever). Every file a user names goes through this check.
+void requireRegularFile(const std::filesystem::path& path);
+
+// Reads a whole file; throws IoError if it is missing, not a regular file or unreadable.
 std::string readFile(const std::filesystem::path& path);
 
 }  // namespace spira

@@ -1,6 +1,7 @@
 #include "spira/base/number_text.h"
 
 #include <charconv>
+#include <cmath>
 #include <iomanip>
 #include <sstream>
 
@@ -38,6 +39,48 @@ std::string pointText(const Vec3& p, int digits)
 {
   return "(" + fixedText(p.x(), digits) + ", " + fixedText(p.y(), digits) + ", " + fixedText(p.z(), digits) +
          ")";
+}
+
+namespace {
+
+template <class T>
+std::optional<T> parseAll(std::string_view text, std::string& problem, const char* kind, const char* range)
+{
+  if (!text.empty() && text.front() == '+') text.remove_prefix(1);  // from_chars rejects '+'
+  T value{};
+  const auto r = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (r.ec == std::errc::result_out_of_range) {
+    problem = std::string("is beyond the range of ") + range;
+    return std::nullopt;
+  }
+  if (r.ec != std::errc() || r.ptr != text.data() + text.size() || text.empty()) {
+    problem = std::string("is not ") + kind;
+    return std::nullopt;
+  }
+  return value;
+}
+
+}  // namespace
+
+std::optional<double> parseFiniteNumber(std::string_view text, std::string& problem)
+{
+  const auto x = parseAll<double>(text, problem, "a number", "a double (about 1.8e308)");
+  if (x && !std::isfinite(*x)) {
+    problem = "is not a finite number";
+    return std::nullopt;
+  }
+  return x;
+}
+
+std::optional<long long> parseWholeNumber(std::string_view text, std::string& problem)
+{
+  return parseAll<long long>(text, problem, "a whole number", "a 64-bit whole number");
+}
+
+std::string clippedText(std::string_view text)
+{
+  constexpr size_t kQuoteChars = 60;
+  return text.size() <= kQuoteChars ? std::string(text) : std::string(text.substr(0, kQuoteChars)) + "...";
 }
 
 }  // namespace spira

@@ -1,6 +1,8 @@
 #pragma once
 
+#include <optional>
 #include <string>
+#include <string_view>
 
 #include "spira/base/transform.h"
 
@@ -17,5 +19,17 @@ std::string fixedText(double x, int digits);
 std::string significantText(double x, int digits);
 // "(x, y, z)" with `digits` after each decimal point: a position in a message.
 std::string pointText(const Vec3& p, int digits);
+
+// The whole of `text` read as a finite decimal number (an optional leading '+', no spaces, the same
+// in every locale), or nullopt with `problem` set to what is wrong, worded to follow the quoted text:
+// "is not a number", "is beyond the range of a double", "is not a finite number". A denormal such as
+// 4.9e-324 is a number.
+std::optional<double> parseFiniteNumber(std::string_view text, std::string& problem);
+// The same for a whole number ("3.7", "1e3" are not one).
+std::optional<long long> parseWholeNumber(std::string_view text, std::string& problem);
+
+// User text quoted in a message, clipped to about 60 characters with an ellipsis so that a huge
+// value is not echoed back.
+std::string clippedText(std::string_view text);
 
 }  // namespace spira

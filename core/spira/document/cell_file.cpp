@@ -6,6 +6,7 @@
 #include "spira/base/atomic_file.h"
 #include "spira/base/error.h"
 #include "spira/base/units.h"
+#include "spira/document/json_read.h"
 
 namespace spira {
 
@@ -159,13 +160,8 @@ CellRecord cellFromText(const std::string& text, const std::filesystem::path& ba
                         const std::string& what)
 {
   const CellReader r(what, baseDir);
-  nlohmann::json j;
-  try {
-    j = nlohmann::json::parse(text);
-  } catch (const nlohmann::json::parse_error& e) {
-    throw InputError(what + " is not valid JSON: " + e.what(),
-                     "fix the syntax (a JSON validator shows where)");
-  }
+  const nlohmann::json j =
+      json_read::parse(text, what, "fix the syntax (docs/cell-format.md shows the format)");
   if (!j.is_object()) r.fail("top level", "must be a JSON object");
   const double version = r.number(j, "spira_cell", "top level");
   if (version != kCellFileVersion)

@@ -3,6 +3,7 @@
 #include <cstring>
 
 #include "spira/base/error.h"
+#include "spira/document/json_read.h"
 
 namespace spira::codec {
 
@@ -183,38 +184,27 @@ TriangleMesh meshFromJson(const nlohmann::json& j, const std::string& what)
 
 const nlohmann::json& field(const nlohmann::json& j, const char* key, const std::string& what)
 {
-  if (!j.is_object()) malformed(what, "expected an object");
-  auto it = j.find(key);
-  if (it == j.end()) malformed(what, std::string("missing '") + key + "'");
-  return *it;
+  return json_read::member(j, key, what, kDamagedHint);
 }
 
 std::string stringField(const nlohmann::json& j, const char* key, const std::string& what)
 {
-  const auto& v = field(j, key, what);
-  if (!v.is_string()) malformed(what, std::string("'") + key + "' is not a string");
-  return v.get<std::string>();
+  return json_read::text(j, key, what, kDamagedHint);
 }
 
 double numberField(const nlohmann::json& j, const char* key, const std::string& what)
 {
-  const auto& v = field(j, key, what);
-  if (!v.is_number()) malformed(what, std::string("'") + key + "' is not a number");
-  return v.get<double>();
+  return json_read::number(j, key, what, kDamagedHint);
 }
 
 std::int64_t intField(const nlohmann::json& j, const char* key, const std::string& what)
 {
-  const auto& v = field(j, key, what);
-  if (!v.is_number_integer()) malformed(what, std::string("'") + key + "' is not an integer");
-  return v.get<std::int64_t>();
+  return json_read::wholeNumber(j, key, what, kDamagedHint);
 }
 
 bool boolField(const nlohmann::json& j, const char* key, const std::string& what)
 {
-  const auto& v = field(j, key, what);
-  if (!v.is_boolean()) malformed(what, std::string("'") + key + "' is not true or false");
-  return v.get<bool>();
+  return json_read::flag(j, key, what, kDamagedHint);
 }
 
 int checkSchema(const nlohmann::json& j, int supported, const std::string& what)

@@ -17,6 +17,7 @@ constexpr off_t kMapThreshold = 1 << 20;
 
 MappedFile::MappedFile(const std::filesystem::path& file)
 {
+  requireRegularFile(file);
   const int fd = ::open(file.c_str(), O_RDONLY | O_CLOEXEC);
   struct stat st {};
   if (fd >= 0 && ::fstat(fd, &st) == 0 && S_ISREG(st.st_mode) && st.st_size >= kMapThreshold) {

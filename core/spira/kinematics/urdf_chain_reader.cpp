@@ -1,10 +1,10 @@
 // KinematicChain::fromUrdf*: the URDF side of the chain, kept apart from the numerics.
 #include <algorithm>
-#include <fstream>
 #include <sstream>
 
 #include <urdf_parser/urdf_parser.h>
 
+#include "spira/base/atomic_file.h"
 #include "spira/base/error.h"
 #include "spira/kinematics/kinematic_chain.h"
 
@@ -137,12 +137,9 @@ KinematicChain KinematicChain::fromUrdfString(const std::string& xml, const std:
 KinematicChain KinematicChain::fromUrdfFile(const std::string& path, const std::string& baseLink,
                                             const std::string& tipLink)
 {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw IoError("cannot read the robot description '" + path + "'", "check that the file exists");
-  std::ostringstream text;
-  text << in.rdbuf();
+  const std::string text = readFile(path);
   try {
-    return fromUrdfString(text.str(), baseLink, tipLink);
+    return fromUrdfString(text, baseLink, tipLink);
   } catch (const InputError& e) {
     throw InputError(path + ": " + e.what(), e.hint());
   }

@@ -125,8 +125,11 @@ const char* MeshReport::className() const
 
 bool MeshReport::isPlannable() const
 {
-  return !hasIssue(MeshIssueKind::NonFiniteCoordinate) && !hasIssue(MeshIssueKind::NonManifoldEdge) &&
-         !hasIssue(MeshIssueKind::NonManifoldVertex) && !hasIssue(MeshIssueKind::InconsistentOrientation);
+  // A mesh whose every face is degenerate has no surface at all.
+  const bool noSurface = faceCount > 0 && issueCount(MeshIssueKind::DegenerateFace) >= faceCount;
+  return !noSurface && !hasIssue(MeshIssueKind::NonFiniteCoordinate) &&
+         !hasIssue(MeshIssueKind::NonManifoldEdge) && !hasIssue(MeshIssueKind::NonManifoldVertex) &&
+         !hasIssue(MeshIssueKind::InconsistentOrientation);
 }
 
 std::string MeshReport::toText() const

@@ -169,12 +169,22 @@ size_t countComponents(const TriangleMesh& mesh, const std::vector<std::uint8_t>
   return count;
 }
 
-void classify(MeshReport& r, size_t topologyFaces)
+void classify(MeshReport& r, size_t topologyFaces, size_t degenerateFaces)
 {
   const size_t loops = r.boundaryLoops.size();
   r.partClass = PartClass::Unsupported;
   if (topologyFaces == 0) {
     r.classReason = "the mesh has no usable faces; import a part with a surface";
+  } else if (degenerateFaces >= r.faceCount) {
+    r.classReason =
+        "all " + std::to_string(r.faceCount) +
+        " faces are degenerate (collapsed to a point or a line): the mesh has no surface; import a "
+        "part with a surface";
+  } else if (loops == 1 && r.boundaryLoops.front().vertices.size() >= r.vertexCount) {
+    r.classReason =
+        "every vertex lies on the part's one boundary edge, so nothing of the surface is inside it "
+        "(a single triangle, a flat strip or fan): a closed-top wall rises from its base edge to a "
+        "top inside it; import the wall with its surface";
   } else if (r.componentCount > 1) {
     r.classReason = std::to_string(r.componentCount) +
                     " separate pieces: Spira plans one connected part at a time, so split the file "
@@ -191,9 +201,10 @@ void classify(MeshReport& r, size_t topologyFaces)
     r.partClass = PartClass::Open;
     r.classReason = "2 boundary loops: an open wall (a tube or funnel) from its base edge to its top edge";
   } else {
-    r.classReason = std::to_string(loops) +
-                    " boundary loops: the part has a hole or several branches; a branching wall (a Y-piece, a "
-                    "junction) is planned as one spiral per branch, a hole in a wall cannot be planned";
+    r.classReason =
+        std::to_string(loops) +
+        " boundary loops: the part has a hole or several branches; a branching wall (a Y-piece, a "
+        "junction) is planned as one spiral per branch, a hole in a wall cannot be planned";
   }
 }
 
@@ -299,7 +310,7 @@ MeshReport validateMesh(const TriangleMesh& mesh)
 
   r.boundaryLoops = extractBoundaryLoops(mesh, table, fans);
   r.componentCount = countComponents(mesh, useFace);
-  classify(r, topologyFaces);
+  classify(r, topologyFaces, r.issueCount(MeshIssueKind::DegenerateFace));
   return r;
 }
 

@@ -6,6 +6,7 @@
 #include <cstring>
 #include <limits>
 #include <string>
+#include <vector>
 
 #include <tbb/blocked_range.h>
 #include <tbb/enumerable_thread_specific.h>
@@ -197,19 +198,44 @@ std::vector<std::pair<int, int>> nearPairs(const Vec3* p, const std::vector<int>
   return pairs;
 }
 
+// The size the relative tolerance applies to is the bounding-box diagonal, but at most this many
+// typical (median) edges: one stray vertex far away would otherwise make the tolerance as long as
+// whole triangles. Real parts span far fewer edges than this, so their tolerance is unchanged.
+constexpr double kMaxSizeInEdges = 1e4;
+// Edges sampled for the median: enough for a steady estimate, few enough to cost nothing.
+constexpr size_t kEdgeSamples = size_t{1} << 16;
+
+// The median length of the triangles' finite, non-zero edges (corner(t, k): corner k of triangle t),
+// sampled evenly over the triangles; 0 when there is none.
+template <class Corner>
+double medianEdgeLength(size_t triangles, const Corner& corner)
+{
+  std::vector<double> lengths;
+  const size_t step = std::max<size_t>(1, triangles / kEdgeSamples);
+  for (size_t t = 0; t < triangles; t += step)
+    for (int k = 0; k < 3; ++k) {
+      const double l = (corner(t, k) - corner(t, (k + 1) % 3)).norm();
+      if (std::isfinite(l) && l > 0.0) lengths.push_back(l);
+    }
+  if (lengths.empty()) return 0.0;
+  auto mid = lengths.begin() + static_cast<std::ptrdiff_t>(lengths.size() / 2);
+  std::nth_element(lengths.begin(), mid, lengths.end());
+  return *mid;
+}
+
 struct PointWeld {
   BigVector<int> newId;    // per input point: its output vertex
   BigVector<int> firstOf;  // per output vertex: the input point that gives its position
   double tolerance = 0.0;
 };
 
-// Clusters points closer than relTol * (bounding-box diagonal), transitively. Output vertices are
-// numbered in order of their first point and sit exactly at that point.
-PointWeld weldPoints(const Vec3* p, size_t n, double relTol)
+// Clusters points closer than relTol * min(bounding-box diagonal, kMaxSizeInEdges * `medianEdge`),
+// transitively. Output vertices are numbered in order of their first point and sit exactly at that point.
+PointWeld weldPoints(const Vec3* p, size_t n, double relTol, double medianEdge)
 {
   PointWeld w;
   const BoundingBox box = finiteBounds(p, n);
-  w.tolerance = box.empty() ? 0.0 : relTol * box.diagonal();
+  w.tolerance = box.empty() ? 0.0 : relTol * std::min(box.diagonal(), kMaxSizeInEdges * medianEdge);
   BigVector<int> rep = exactDuplicates(p, n);
 
   if (w.tolerance > 0.0) {
@@ -289,7 +315,9 @@ TriangleMesh weldVertices(const TriangleMesh& mesh, double relativeTolerance, We
       compact[v] = static_cast<int>(points.size());
       points.push_back(mesh.vertices[v]);
     }
-  const PointWeld w = weldPoints(points.data(), points.size(), relativeTolerance);
+  const double medianEdge = medianEdgeLength(
+      mesh.faceCount(), [&](size_t f, int k) -> const Vec3& { return mesh.vertices[mesh.faces[f][k]]; });
+  const PointWeld w = weldPoints(points.data(), points.size(), relativeTolerance, medianEdge);
 
   TriangleMesh out;
   out.vertices.resize(w.firstOf.size());
@@ -317,7 +345,9 @@ TriangleMesh weldTriangleSoup(const std::vector<Vec3>& corners, double relativeT
     throw InputError("the mesh has too many triangles (" + std::to_string(corners.size() / 3) + ")",
                      "decimate the part below 700 million triangles");
   const size_t n = corners.size();
-  const PointWeld w = weldPoints(corners.data(), n, relativeTolerance);
+  const double medianEdge = medianEdgeLength(
+      n / 3, [&](size_t t, int k) -> const Vec3& { return corners[3 * t + static_cast<size_t>(k)]; });
+  const PointWeld w = weldPoints(corners.data(), n, relativeTolerance, medianEdge);
 
   TriangleMesh out;
   out.vertices.resize(w.firstOf.size());

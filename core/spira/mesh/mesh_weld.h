@@ -17,7 +17,8 @@ struct WeldStats {
   double tolerance = 0.0;  // absolute, mm
 };
 
-// Merges vertices closer than `relativeTolerance` * bounding-box diagonal (transitively) and
+// Merges vertices closer than `relativeTolerance` * bounding-box diagonal (the diagonal taken at most
+// 1e4 median edge lengths, so one stray far vertex cannot weld whole triangles), transitively, and
 // drops vertices no face uses. Faces keep their order and orientation; faces that become
 // degenerate are kept (validation reports them), so nothing is silently thrown away.
 TriangleMesh weldVertices(const TriangleMesh& mesh, double relativeTolerance = kDefaultWeldTolerance,

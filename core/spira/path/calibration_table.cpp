@@ -1,15 +1,14 @@
 #include "spira/path/calibration_table.h"
 
 #include <algorithm>
-#include <cerrno>
 #include <cmath>
-#include <cstdlib>
-#include <fstream>
 #include <functional>
 #include <numeric>
 #include <sstream>
 
+#include "spira/base/atomic_file.h"
 #include "spira/base/error.h"
+#include "spira/base/number_text.h"
 
 namespace spira {
 
@@ -131,12 +130,13 @@ CalibrationTable parseCalibrationCsv(std::istream& in, const std::string& source
     const int cols[2] = {hCol, tsCol};
     for (int v = 0; v < 2; ++v) {
       const std::string cell = static_cast<size_t>(cols[v]) < cells.size() ? cells[cols[v]] : std::string();
-      char* end = nullptr;
-      errno = 0;
-      values[v] = std::strtod(cell.c_str(), &end);
-      if (cell.empty() || end != cell.c_str() + cell.size() || errno == ERANGE)
-        throw InputError(source + ", line " + std::to_string(lineNo) + ": '" + cell + "' is not a number",
-                         "write plain decimal numbers with a '.' decimal point");
+      std::string problem;
+      const auto x = parseFiniteNumber(cell, problem);
+      if (!x)
+        throw InputError(
+            source + ", line " + std::to_string(lineNo) + ": '" + clippedText(cell) + "' " + problem,
+            "write plain decimal numbers with a '.' decimal point");
+      values[v] = *x;
     }
     heights.push_back(values[0]);
     speeds.push_back(values[1]);
@@ -153,9 +153,7 @@ CalibrationTable parseCalibrationCsv(std::istream& in, const std::string& source
 
 CalibrationTable readCalibrationCsv(const std::string& path)
 {
-  std::ifstream in(path);
-  if (!in)
-    throw IoError("cannot open the calibration table " + path, "check the path and the file's permissions");
+  std::istringstream in(readFile(path));
   return parseCalibrationCsv(in, path);
 }
 

@@ -24,8 +24,11 @@ void refuseDefects(const MeshReport& report)
   std::ostringstream what;
   what << "the part mesh has defects that stop planning:";
   bool first = true;
+  const bool noSurface = report.issueCount(MeshIssueKind::DegenerateFace) >= report.faceCount;
   for (const auto& issue : report.issues) {
-    if (issue.kind == MeshIssueKind::DegenerateFace || issue.kind == MeshIssueKind::DuplicateFace) continue;
+    if ((issue.kind == MeshIssueKind::DegenerateFace && !noSurface) ||
+        issue.kind == MeshIssueKind::DuplicateFace)
+      continue;
     what << (first ? " " : ", ") << issue.count << " " << meshIssueName(issue.kind);
     if (!issue.positions.empty()) {
       const Vec3& p = issue.positions.front();
@@ -51,6 +54,10 @@ PartTopology findPartTopology(const MeshReport& report, const TriangleMesh& mesh
   if (report.componentCount != 1)
     throw InputError("the part has no piece to plan", "import a part with a surface");
   const auto& loops = report.boundaryLoops;
+  // One or two edges but no wall: every vertex is on its edge.
+  if (!loops.empty() && loops.size() <= 2 && report.partClass == PartClass::Unsupported)
+    throw InputError("the part cannot be planned: " + report.classReason,
+                     "import a thin wall that rises from its base edge (spira-cli info shows how it reads)");
   if (loops.empty())
     throw InputError("the part cannot be planned: " + report.classReason,
                      "give Spira the wall as a surface open at its base: its mid-surface, or its inner or "

@@ -5,6 +5,7 @@
 
 #include "spira/base/atomic_file.h"
 #include "spira/base/error.h"
+#include "spira/base/number_text.h"
 
 namespace spira {
 namespace {
@@ -13,6 +14,15 @@ constexpr const char* kHeader = "index,x,y,z,nx,ny,nz,tx,ty,tz,bx,by,bz,rev,gen,
 // Plans written before multi-branch parts had no path column: one path.
 constexpr const char* kSinglePathHeader = "index,x,y,z,nx,ny,nz,tx,ty,tz,bx,by,bz,rev,gen,height,ts,wfs,arc";
 constexpr int kMaxColumns = 20;
+constexpr const char* kColumnNames[kMaxColumns] = {"index", "x",      "y",  "z",   "nx",  "ny",  "nz",
+                                                   "tx",    "ty",     "tz", "bx",  "by",  "bz",  "rev",
+                                                   "gen",   "height", "ts", "wfs", "arc", "path"};
+enum Column { kIndex = 0, kRev = 13, kGen = 14, kHeight = 15, kTs = 16, kWfs = 17, kArc = 18, kPath = 19 };
+
+bool whole(double x)
+{
+  return x >= 0 && x == std::floor(x) && x < 1e9;
+}
 
 }  // namespace
 
@@ -24,6 +34,9 @@ Trajectory trajectoryFromCsv(const std::string& text, const std::string& what)
   const auto fail = [&](const std::string& problem) -> void {
     throw InputError(what + " line " + std::to_string(lineNo) + ": " + problem,
                      "use the trajectory.csv that 'spira-cli plan' wrote, unedited");
+  };
+  const auto failAt = [&](int col, const std::string& problem) -> void {
+    fail("column " + std::to_string(col + 1) + " (" + kColumnNames[col] + ") " + problem);
   };
   while (pos < text.size()) {
     size_t end = text.find('\n', pos);
@@ -49,14 +62,36 @@ Trajectory trajectoryFromCsv(const std::string& text, const std::string& what)
       const char* last = line.data() + comma;
       const auto res = std::from_chars(first, last, v[col]);
       if (res.ec != std::errc() || res.ptr != last || !std::isfinite(v[col]))
-        fail("column " + std::to_string(col + 1) + " is not a number");
+        failAt(col,
+               "is not a finite number, found '" + clippedText(std::string_view(first, last - first)) + "'");
       ++col;
       at = comma + 1;
       if (comma == line.size()) break;
     }
     if (col != columns || at <= line.size()) fail("expected " + std::to_string(columns) + " columns");
-    if (v[0] != static_cast<double>(t.points.size())) fail("the index is not the row number");
-    if (v[19] < 0 || v[19] != std::floor(v[19])) fail("the path is not a sub-path number");
+    if (v[kIndex] != static_cast<double>(t.points.size())) failAt(kIndex, "is not the row number");
+    if (!whole(v[kPath]))
+      failAt(kPath,
+             "must be a sub-path number (a whole number from 0), found " + significantText(v[kPath], 6));
+    for (int c : {kRev, kGen})
+      if (!whole(v[c])) failAt(c, "must be a whole number from 0, found " + significantText(v[c], 6));
+    // Sub-paths are numbered from 0 in the order they are built: a number that goes back or skips
+    // would make the program start the arc where no sub-path starts.
+    if (t.points.empty() && v[kPath] != 0)
+      failAt(kPath, "must be 0 on the first row (sub-paths are numbered in order from 0), found " +
+                        significantText(v[kPath], 6));
+    if (const int previous = t.points.empty() ? 0 : t.points.back().path;
+        v[kPath] < previous || v[kPath] > previous + 1)
+      failAt(kPath, "must stay " + std::to_string(previous) + " or go on to " + std::to_string(previous + 1) +
+                        " (sub-paths are numbered in order from 0), found " + significantText(v[kPath], 6));
+    if (v[kTs] <= 0)
+      failAt(kTs, "must be a positive travel speed in mm/s, found " + significantText(v[kTs], 6));
+    if (v[kArc] != 0 && v[kArc] != 1) failAt(kArc, "must be 0 or 1, found " + significantText(v[kArc], 6));
+    if (v[kArc] == 1 ? v[kWfs] <= 0 : v[kWfs] < 0)
+      failAt(kWfs, std::string(v[kArc] == 1 ? "must be a positive wire-feed speed with the arc on"
+                                            : "must not be negative") +
+                       ", found " + significantText(v[kWfs], 6));
+    if (v[kHeight] < 0) failAt(kHeight, "must not be negative, found " + significantText(v[kHeight], 6));
     TrajectoryPoint p;
     p.position = Vec3(v[1], v[2], v[3]);
     p.normal = Vec3(v[4], v[5], v[6]);

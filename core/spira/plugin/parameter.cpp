@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "spira/base/error.h"
+#include "spira/base/number_text.h"
 #include "spira/base/units.h"
 
 namespace spira {
@@ -23,6 +24,11 @@ std::string describeRange(const ParamDef& d)
     s << "at most " << *d.max;
   if (!d.unit.empty()) s << " " << d.unit;
   return s.str();
+}
+
+std::string useHint(const std::string& kind, const ParamDef& d)
+{
+  return "use " + kind + (d.min || d.max ? " " + describeRange(d) : std::string());
 }
 
 std::string joinChoices(const std::vector<std::string>& c)
@@ -153,34 +159,24 @@ ParamValue ParamSchema::parse(const std::string& key, const std::string& text) c
       else if (text == "false" || text == "0" || text == "no" || text == "off")
         v = false;
       else
-        throw InputError("parameter '" + key + "' expects true or false", "got '" + text + "'");
+        throw InputError("parameter '" + key + "' expects true or false", "got '" + clippedText(text) + "'");
       break;
     case ParamType::Int: {
-      size_t used = 0;
-      long long x = 0;
-      try {
-        x = std::stoll(text, &used);
-      } catch (const std::exception&) {
-        used = 0;
-      }
-      if (used != text.size() || text.empty())
-        throw InputError("parameter '" + key + "' expects a whole number", "got '" + text + "'");
-      v = static_cast<std::int64_t>(x);
+      std::string problem;
+      const auto x = parseWholeNumber(text, problem);
+      if (!x)
+        throw InputError("parameter '" + key + "': '" + clippedText(text) + "' " + problem,
+                         useHint("a whole number", *d));
+      v = static_cast<std::int64_t>(*x);
       break;
     }
     case ParamType::Double: {
-      size_t used = 0;
-      double x = 0;
-      try {
-        x = std::stod(text, &used);
-      } catch (const std::exception&) {
-        used = 0;
-      }
-      if (used != text.size() || text.empty() || !std::isfinite(x))
-        throw InputError(
-            "parameter '" + key + "' expects a number" + (d->unit.empty() ? "" : " in " + d->unit),
-            "got '" + text + "'");
-      v = x;
+      std::string problem;
+      const auto x = parseFiniteNumber(text, problem);
+      if (!x)
+        throw InputError("parameter '" + key + "': '" + clippedText(text) + "' " + problem,
+                         useHint("a number", *d));
+      v = *x;
       break;
     }
     default:
