@@ -11,6 +11,7 @@
 
 #include "cell_variant.h"
 #include "cli_runner.h"
+#include "spira/base/output_set.h"
 #include "spira/document/document.h"
 #include "spira/planning/trajectory_csv_reader.h"
 #include "support/test_support.h"
@@ -50,7 +51,9 @@ class HostileReport : public ::testing::Test {
     dir_ = nullptr;
   }
 
-  // A copy of the plan folder with report.json's `key` set to `value`.
+  // A copy of the plan folder with report.json's `key` set to `value`, without the set's manifest
+  // (which would refuse the edited file as a whole), as an older Spira wrote plan folders: then
+  // the report itself is read field by field.
   fs::path editedPlan(const std::string& key, const nlohmann::json& value)
   {
     const fs::path plan = tmp_ / "plan";
@@ -58,6 +61,7 @@ class HostileReport : public ::testing::Test {
     nlohmann::json report = nlohmann::json::parse(slurp(plan / "report.json"));
     report[key] = value;
     writeBytes(plan / "report.json", report.dump(2));
+    fs::remove(plan / kOutputManifest);
     return plan;
   }
 
@@ -110,6 +114,7 @@ TEST_F(HostileReport, SyntaxErrorGivesLineAndColumn)
   const fs::path plan = tmp_ / "plan";
   fs::copy(*dir_ / "plan", plan);
   writeBytes(plan / "report.json", "{\n  \"part\": \"dome\",\n  \"n_revolutions\": 3 4\n}\n");
+  fs::remove(plan / kOutputManifest);
   const CliRun r = exportPlan(plan);
   EXPECT_EQ(r.exitCode, 3) << r.err;
   EXPECT_TRUE(has(r.err, "report.json, line 3, column 22: unexpected '4'")) << r.err;

@@ -121,6 +121,31 @@ TEST(MainWindow, FailedImportLeavesTheDocumentUnchangedAndShowsErrorAndHint)
   EXPECT_EQ(doc.revision(), revisionBefore);
 }
 
+// Files that crashed or hung the import (docs in tests/data/hostile/*/README.md): each is refused
+// with a message naming it, the document keeps its part and the window stays up and usable.
+TEST(MainWindow, HostileFilesAreRefusedWithAMessageAndTheWindowStaysUp)
+{
+  TempDir dir;
+  Document doc;
+  MainWindow w(doc, MainWindowOptions{false, false});
+  showAndWait(w);
+  ASSERT_TRUE(openAndWait(w, qpath(writeOpenCylinderStl(dir.path()))));
+  const auto partBefore = doc.part();
+  const std::filesystem::path hostile = sourceDir() / "tests/data/hostile";
+  for (const char* file : {"step/wrong_type_crash.step", "step/unresolved_face.step", "ply/cut_in_format.ply",
+                           "ply/no_end_header.ply", "ply/huge_vertex_count.ply", "ply/index_out_of_range.ply",
+                           "ply/truncated_faces.ply"}) {
+    const std::filesystem::path path = hostile / file;
+    EXPECT_FALSE(openAndWait(w, qpath(path))) << file;
+    EXPECT_TRUE(w.lastErrorMessage().contains(QString::fromStdString(path.filename().string())))
+        << file << ": " << w.lastErrorMessage().toStdString();
+    EXPECT_EQ(doc.part(), partBefore) << file;
+    EXPECT_TRUE(w.isVisible()) << file;
+  }
+  // Still usable: a good part imports after them.
+  EXPECT_TRUE(openAndWait(w, qpath(writeOpenCylinderStl(dir.path()))));
+}
+
 TEST(MainWindow, SavedProjectOpensWithTheSamePartAndIsRemembered)
 {
   TempDir dir;
