@@ -6,6 +6,7 @@
 #include "fanuc_tp_positions.h"
 #include "fanuc_tp_program.h"
 #include "spira/base/error.h"
+#include "spira/base/number_text.h"
 #include "spira/export/export_params.h"
 #include "spira/export/export_steps.h"
 #include "spira/export/fixed_number.h"
@@ -219,6 +220,26 @@ ExportResult FanucTpExporter::write(const ExportInput& input, const ParamSet& pa
   const std::vector<std::string> header = programHeaderLines(input.header, settings);
 
   const TpOutput out = writeTpProgram(path, s, header, progress);
+  // A move the controller would run at a speed far from the plan's lays another deposit height:
+  // refused, with the unit that writes every move closely when there is one (written and checked).
+  constexpr double kRefusedSpeedError = 0.5;
+  if (out.worstSpeedError > kRefusedSpeedError) {
+    std::string hint = "check the plan's travel speeds (the ts column of trajectory.csv)";
+    if (s.speedUnit != TpSpeedUnit::Msec) {
+      TpSettings msec = s;
+      msec.speedUnit = TpSpeedUnit::Msec;
+      NullProgress quiet;
+      const TpOutput alt = writeTpProgram(path, msec, header, quiet);
+      if (alt.worstSpeedError <= 0.05)
+        hint = "set the speed unit to msec (--speed-unit msec), which writes every move within " +
+               percent(alt.worstSpeedError) + " of its planned speed";
+    }
+    throw InputError("move " + std::to_string(out.worstSpeedMove) + " of the program is planned at " +
+                         significantText(out.worstSpeedWanted, 3) + " mm/s, which whole " + unit +
+                         " cannot write: the controller would run it " + percent(out.worstSpeedError) +
+                         " off its planned speed",
+                     hint);
+  }
   if (out.worstSpeedError > 0.05)
     result.warnings.push_back("rounding to whole " + unit + " changes a move's speed by up to " +
                               percent(out.worstSpeedError) +

@@ -184,6 +184,8 @@ class TpWriter {
     out.files.insert(out.files.begin(),
                      OutputFile{names.main + ".ls", main.finish(names.main, s_, path_.hasPositioner)});
     out.worstSpeedError = worstSpeedError_;
+    out.worstSpeedWanted = worstSpeedWanted_;
+    out.worstSpeedMove = worstSpeedMove_;
     return out;
   }
 
@@ -339,7 +341,11 @@ class TpWriter {
         break;
       }
     }
-    if (wanted > 0.0) worstSpeedError_ = std::max(worstSpeedError_, std::abs(written - wanted) / wanted);
+    if (wanted > 0.0 && std::abs(written - wanted) / wanted > worstSpeedError_) {
+      worstSpeedError_ = std::abs(written - wanted) / wanted;
+      worstSpeedWanted_ = p.speed;
+      worstSpeedMove_ = k;
+    }
     return text;
   }
 
@@ -350,6 +356,8 @@ class TpWriter {
   std::string analogText_;
   std::vector<std::string> leadOptions_;  // by move; empty without a lead
   double worstSpeedError_ = 0.0;
+  double worstSpeedWanted_ = 0.0;
+  size_t worstSpeedMove_ = 0;
 };
 
 }  // namespace

@@ -3,9 +3,9 @@
 #include <string>
 #include <vector>
 
+#include "spira/base/output_set.h"
 #include "spira/base/progress.h"
 #include "spira/export/export_path.h"
-#include "spira/base/output_set.h"
 
 namespace spira {
 
@@ -36,7 +36,9 @@ struct TpSettings {
 
 struct TpOutput {
   std::vector<OutputFile> files;
-  double worstSpeedError = 0.0;  // largest relative error of a rounded path speed
+  double worstSpeedError = 0.0;   // largest relative error of a rounded path speed
+  double worstSpeedWanted = 0.0;  // the planned speed of that move, mm/s
+  size_t worstSpeedMove = 0;      // its index in the export path
 };
 
 // Writes NAME.ls (or, past maxPoints, a main program that CALLs numbered parts in order) with

@@ -185,6 +185,26 @@ TEST(FanucTpExport, SpeedUnits)
     ASSERT_EQ(r.warnings.size(), 1u);
     EXPECT_NE(r.warnings[0].find("9.1 %"), std::string::npos) << r.warnings[0];
   }
+  {
+    // A crawl whole mm/sec cannot write (0.013 mm/s would run at 1 mm/sec, 7,592 % faster) is
+    // refused, naming the unit that writes it, which then does.
+    Trajectory crawl = plan;
+    for (auto& p : crawl.points) p.travelSpeed = 0.013;
+    test::TempDir dir;
+    try {
+      test::runExporter("export.fanuc_tp", crawl, &joints, ParamSet(), dir.path());
+      ADD_FAILURE() << "a crawl at 0.013 mm/s was written in whole mm/sec";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("0.013 mm/s"), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find("7592.3 %"), std::string::npos) << e.what();
+      EXPECT_NE(e.hint().find("--speed-unit msec"), std::string::npos) << e.hint();
+    }
+    EXPECT_TRUE(test::filesIn(dir.path()).empty());
+    ParamSet msec;
+    msec.set("speed_unit", std::string("msec"));
+    const ExportResult r = test::runExporter("export.fanuc_tp", crawl, &joints, msec, dir.path());
+    EXPECT_TRUE(r.warnings.empty());
+  }
 }
 
 TEST(FanucTpExport, WireFeedRidesOnThePreviousMove)
