@@ -3,9 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <fstream>
-#include <sstream>
 
+#include "spira/base/atomic_file.h"
 #include "spira/base/error.h"
 #include "spira/base/output_set.h"
 #include "support/test_support.h"
@@ -25,14 +24,6 @@ std::vector<std::string> entries(const fs::path& dir)
   return names;
 }
 
-std::string contents(const fs::path& file)
-{
-  std::ifstream in(file, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
 const std::vector<OutputFile> kPlan{
     {"trajectory.csv", "x,y,z\n1,2,3\n"}, {"joints.csv", "j1\n0.5\n"}, {"report.json", "{}\n"}};
 
@@ -46,7 +37,7 @@ TEST(OutputSet, WritesEveryFileWithAManifestTheCheckAccepts)
   EXPECT_EQ(written[2].filename(), "report.json");
   EXPECT_EQ(entries(dir),
             (std::vector<std::string>{kOutputManifest, "joints.csv", "report.json", "trajectory.csv"}));
-  EXPECT_EQ(contents(dir / "joints.csv"), "j1\n0.5\n");
+  EXPECT_EQ(readFile(dir / "joints.csv"), "j1\n0.5\n");
   EXPECT_NO_THROW(verifyOutputSet(dir));
   // Nothing is left beside the folder.
   EXPECT_EQ(entries(tmp.path()), (std::vector<std::string>{"plan/"}));
@@ -65,8 +56,8 @@ TEST(OutputSet, APlanDropsThePreviousPlanAndProgramAndKeepsOtherFiles)
   replaceOutputSet(dir, OutputKind::Plan, {{"trajectory.csv", "new\n"}, {"report.json", "{\"n\": 2}\n"}});
   EXPECT_EQ(entries(dir),
             (std::vector<std::string>{kOutputManifest, "notes.txt", "report.json", "trajectory.csv"}));
-  EXPECT_EQ(contents(dir / "notes.txt"), "mine");
-  EXPECT_EQ(contents(dir / "trajectory.csv"), "new\n");
+  EXPECT_EQ(readFile(dir / "notes.txt"), "mine");
+  EXPECT_EQ(readFile(dir / "trajectory.csv"), "new\n");
   EXPECT_NO_THROW(verifyOutputSet(dir));
 }
 
@@ -84,7 +75,7 @@ TEST(OutputSet, AProgramReplacesItsPreviousFilesAndKeepsThePlanAndOtherPrograms)
   replaceOutputSet(dir, OutputKind::Program, {{"a.src", "one"}, {"a.dat", "two"}});
   EXPECT_EQ(entries(dir), (std::vector<std::string>{kOutputManifest, "a.dat", "a.src", "b.dat", "b.src",
                                                     "joints.csv", "report.json", "trajectory.csv"}));
-  EXPECT_EQ(contents(dir / "a.src"), "one");
+  EXPECT_EQ(readFile(dir / "a.src"), "one");
   EXPECT_NO_THROW(verifyOutputSet(dir));
 }
 
@@ -99,7 +90,7 @@ TEST(OutputSet, AFailureLeavesThePreviousSetIntactAndNothingBeside)
   const std::vector<OutputFile> bad{{"b.src", "three"}, {std::string(300, 'x') + ".dat", "four"}};
   EXPECT_THROW(replaceOutputSet(dir, OutputKind::Program, bad), IoError);
   EXPECT_EQ(entries(dir), (std::vector<std::string>{kOutputManifest, "a.dat", "a.src"}));
-  EXPECT_EQ(contents(dir / "a.dat"), "two");
+  EXPECT_EQ(readFile(dir / "a.dat"), "two");
   EXPECT_NO_THROW(verifyOutputSet(dir));
   EXPECT_EQ(entries(tmp.path()), (std::vector<std::string>{"plan/"}));
 }

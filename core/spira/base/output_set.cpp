@@ -8,7 +8,6 @@
 #include <cerrno>
 #include <cstdint>
 #include <cstring>
-#include <fstream>
 #include <random>
 #include <set>
 #include <sstream>
@@ -52,14 +51,6 @@ std::string errnoText()
   return std::strerror(errno);
 }
 
-std::string readAll(const fs::path& path)
-{
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
 std::vector<Entry> entriesOf(const nlohmann::json& list)
 {
   std::vector<Entry> out;
@@ -88,7 +79,7 @@ Manifest readManifest(const fs::path& dir, bool* present = nullptr)
   const fs::path file = dir / kOutputManifest;
   if (present) *present = fs::is_regular_file(file, ec);
   if (!fs::is_regular_file(file, ec)) return m;
-  const nlohmann::json j = nlohmann::json::parse(readAll(file), nullptr, false);
+  const nlohmann::json j = nlohmann::json::parse(readFile(file), nullptr, false);
   if (!j.is_object()) {
     m.complete = false;
     return m;
@@ -191,45 +182,50 @@ std::vector<Entry> entriesFor(const std::vector<OutputFile>& files, const std::s
   return out;
 }
 
-std::set<std::string> namesOf(const std::vector<OutputFile>& files)
-{
-  std::set<std::string> n;
-  for (const OutputFile& f : files) n.insert(f.name);
-  return n;
-}
+// What a new set writes: its kind, its file names and, for a program, the program's name.
+struct NewSet {
+  NewSet(OutputKind k, const std::vector<OutputFile>& files)
+      : kind(k), program(k == OutputKind::Program ? programName(files) : std::string())
+  {
+    for (const OutputFile& f : files) names.insert(f.name);
+  }
 
-// Whether an old entry stays in the folder beside the new set: a plan replaces the previous plan
-// and every program (made from that plan); a program replaces the previous files of the same
-// program and keeps the plan and other programs; nothing keeps a name the new set writes.
-bool kept(const Entry& e, bool isProgram, OutputKind kind, const std::vector<OutputFile>& files)
-{
-  if (namesOf(files).count(e.name)) return false;
-  if (kind == OutputKind::Plan) return false;
-  return !isProgram || e.program != programName(files);
-}
+  // Whether an old entry stays in the folder beside the new set: a plan replaces the previous
+  // plan and every program (made from that plan); a program replaces the previous files of the
+  // same program and keeps the plan and other programs; nothing keeps a name the new set writes.
+  bool keeps(const Entry& e, bool isProgram) const
+  {
+    if (names.count(e.name) || kind == OutputKind::Plan) return false;
+    return !isProgram || e.program != program;
+  }
+
+  OutputKind kind;
+  std::string program;
+  std::set<std::string> names;
+};
 
 // Names the new set drops from the folder.
-std::set<std::string> dropped(const Manifest& old, OutputKind kind, const std::vector<OutputFile>& files)
+std::set<std::string> dropped(const Manifest& old, const NewSet& next)
 {
-  std::set<std::string> names = namesOf(files);
+  std::set<std::string> names = next.names;
   names.insert(kOutputManifest);
   for (const Entry& e : old.plan)
-    if (!kept(e, false, kind, files)) names.insert(e.name);
+    if (!next.keeps(e, false)) names.insert(e.name);
   for (const Entry& e : old.program)
-    if (!kept(e, true, kind, files)) names.insert(e.name);
+    if (!next.keeps(e, true)) names.insert(e.name);
   return names;
 }
 
-Manifest nextManifest(const Manifest& old, OutputKind kind, const std::vector<OutputFile>& files)
+Manifest nextManifest(const Manifest& old, const NewSet& next, const std::vector<OutputFile>& files)
 {
   Manifest m;
   for (const Entry& e : old.plan)
-    if (kept(e, false, kind, files)) m.plan.push_back(e);
+    if (next.keeps(e, false)) m.plan.push_back(e);
   for (const Entry& e : old.program)
-    if (kept(e, true, kind, files)) m.program.push_back(e);
-  const std::vector<Entry> added = entriesFor(files, kind == OutputKind::Program ? programName(files) : "");
-  (kind == OutputKind::Plan ? m.plan : m.program)
-      .insert((kind == OutputKind::Plan ? m.plan : m.program).end(), added.begin(), added.end());
+    if (next.keeps(e, true)) m.program.push_back(e);
+  std::vector<Entry>& into = next.kind == OutputKind::Plan ? m.plan : m.program;
+  const std::vector<Entry> added = entriesFor(files, next.program);
+  into.insert(into.end(), added.begin(), added.end());
   return m;
 }
 
@@ -244,7 +240,7 @@ std::vector<fs::path> swapIn(const fs::path& dir, const Manifest& old, OutputKin
     for (const OutputFile& f : files)
       if (const std::string why = writeSynced(stage / f.name, f.bytes); !why.empty())
         failWriting(dir / f.name, why);
-    const std::set<std::string> drop = dropped(old, kind, files);
+    const std::set<std::string> drop = dropped(old, NewSet(kind, files));
     for (const auto& e : fs::directory_iterator(dir)) {
       const std::string n = e.path().filename().string();
       if (drop.count(n) || n.rfind(".spira-tmp-", 0) == 0) continue;
@@ -253,7 +249,7 @@ std::vector<fs::path> swapIn(const fs::path& dir, const Manifest& old, OutputKin
       if (ec) failWriting(dir / n, "cannot keep it in the new set: " + ec.message());
     }
     if (const std::string why =
-            writeSynced(stage / kOutputManifest, manifestText(nextManifest(old, kind, files)));
+            writeSynced(stage / kOutputManifest, manifestText(nextManifest(old, NewSet(kind, files), files)));
         !why.empty())
       failWriting(dir / kOutputManifest, why);
     syncDirectory(stage);
@@ -305,7 +301,7 @@ std::vector<fs::path> renameIn(const fs::path& dir, const Manifest& old, OutputK
     cleanUp();
     failWriting(dir / kOutputManifest, why);
   }
-  for (const std::string& n : dropped(old, kind, files))
+  for (const std::string& n : dropped(old, NewSet(kind, files)))
     if (n != kOutputManifest) fs::remove(dir / n, ec);
   std::vector<fs::path> written;
   for (size_t i = 0; i < files.size(); ++i) {
@@ -314,7 +310,7 @@ std::vector<fs::path> renameIn(const fs::path& dir, const Manifest& old, OutputK
     written.push_back(target);
   }
   if (const std::string why =
-          writeSynced(dir / kOutputManifest, manifestText(nextManifest(old, kind, files)));
+          writeSynced(dir / kOutputManifest, manifestText(nextManifest(old, NewSet(kind, files), files)));
       !why.empty())
     failWriting(dir / kOutputManifest, why);
   syncDirectory(dir);
@@ -361,7 +357,7 @@ void verifyOutputSet(const fs::path& dir)
       std::error_code ec;
       if (!fs::is_regular_file(file, ec))
         throw InputError("'" + file.string() + "' is missing from the set of files its folder lists", again);
-      if (fs::file_size(file, ec) != e.size || checksum(readAll(file)) != e.sum)
+      if (fs::file_size(file, ec) != e.size || checksum(readFile(file)) != e.sum)
         throw InputError(
             "'" + file.string() +
                 "' is not the file written with the rest of its folder (changed by hand, or left "
