@@ -12,7 +12,7 @@
 #include "spira/base/output_set.h"
 #include "spira/document/cell_file.h"
 #include "spira/document/document.h"
-#include "spira/document/json_read.h"
+#include "spira/document/plan_report.h"
 #include "spira/pipeline/plan_motion.h"
 #include "spira/pipeline/prep_schema.h"
 #include "spira/pipeline/sub_paths.h"
@@ -28,17 +28,11 @@ namespace fs = std::filesystem;
 
 constexpr const char* kCsvFormat = "csv";
 
-constexpr const char* kReplanHint = "plan the part again with spira-cli plan";
-
 nlohmann::json readPlanReport(const fs::path& planDir)
 {
   const fs::path file = planDir / "report.json";
   if (!fs::exists(file)) return nlohmann::json::object();
-  nlohmann::json report = json_read::parse(readFile(file), file.string(), kReplanHint);
-  if (!report.is_object())
-    throw InputError(file.string() + ": expected a JSON object, found " + json_read::describe(report),
-                     kReplanHint);
-  return report;
+  return parsePlanReport(readFile(file), file.string());
 }
 
 // What is exported: the planned trajectory, the cell it was planned for (if any), the values the
@@ -48,8 +42,7 @@ struct ExportSource {
   std::optional<CellRecord> cell;
   std::string cellName;  // for the header: a file name or the project's cell name
   std::string partName;
-  nlohmann::json report = nlohmann::json::object();
-  std::string reportName;  // where the report was read from, for messages
+  PlanReportSummary report;
   PlanSettings settings;
   std::vector<bool> plannedCollision;  // from the plan's joints.csv: points it left in collision
   Transform placement =
@@ -92,10 +85,11 @@ ExportSource projectSource(const fs::path& file)
                           : file.stem().string();
   if (doc.part()) s.placement = doc.part()->T_world_part;
   // The stage reports carry the plan's key figures (revolutions, heights, length) for the header.
+  nlohmann::json merged = nlohmann::json::object();
   for (Stage stage : {Stage::Spiral, Stage::Process, Stage::Kinematics})
     if (const auto& r = doc.results().report(stage); r && r->is_object())
-      for (const auto& [key, value] : r->items()) s.report[key] = value;
-  s.reportName = file.string() + " (the plan's report)";
+      for (const auto& [key, value] : r->items()) merged[key] = value;
+  s.report = summarisePlanReport(merged, file.string() + " (the plan's report)");
   if (doc.settings()) s.settings = *doc.settings();
   return s;
 }
@@ -105,13 +99,11 @@ ExportSource planFolderSource(const fs::path& dir)
 {
   ExportSource s;
   verifyOutputSet(dir);
-  s.report = readPlanReport(dir);
-  s.reportName = (dir / "report.json").string();
-  s.partName = json_read::text(s.report, "part", dir.filename().string(), s.reportName, kReplanHint);
-  const std::string cellFile = json_read::text(s.report, "cell_file", "", s.reportName, kReplanHint);
-  if (!cellFile.empty()) {
-    s.cell = readCellFile(cellFile);
-    s.cellName = cellFile;
+  s.report = summarisePlanReport(readPlanReport(dir), (dir / "report.json").string());
+  s.partName = s.report.part.empty() ? dir.filename().string() : s.report.part;
+  if (!s.report.cellFile.empty()) {
+    s.cell = readCellFile(s.report.cellFile);
+    s.cellName = s.report.cellFile;
   }
   s.trajectory = readTrajectoryCsv(dir / "trajectory.csv");
   s.plannedCollision = collisionColumn(dir / "joints.csv", s.trajectory.size());
@@ -149,16 +141,6 @@ int writeCsv(const ExportSource& source, const std::optional<RobotCell>& cell, c
   replaceOutputSet(outDir, OutputKind::Program, files);
   std::cout << "wrote " << (outDir / "trajectory.csv").string() << solvedText << "\n";
   return kOk;
-}
-
-// What the plan's deposit check said, as the plan wrote it in its report.
-std::string planSummary(const nlohmann::json& report)
-{
-  if (report.contains("deposit_check") && report["deposit_check"].is_object()) {
-    const nlohmann::json& d = report["deposit_check"];
-    if (d.contains("summary") && d["summary"].is_string()) return d["summary"].get<std::string>();
-  }
-  return "its report says it is not feasible";
 }
 
 }  // namespace
@@ -216,13 +198,14 @@ int cmdExport(const std::vector<std::string>& argv)
   if (cell && !cell->canSolve()) throw InputError(cell->ikRefusal(), "choose a cell with a 6-axis arm");
   if (csv) return writeCsv(source, cell, outDir);
   const bool forced = exporterValues.has("force") && exporterValues.getBool("force");
-  const nlohmann::json& r = source.report;
-  const bool infeasible =
-      r.is_object() && r.contains("feasible") && r["feasible"].is_boolean() && !r["feasible"].get<bool>();
+  const bool infeasible = source.report.feasible == false;
   if (infeasible && !forced)
-    throw InfeasibleError("the plan is infeasible: " + planSummary(r),
-                          "change the plan (spira-cli plan prints the change that works), or add --force to "
-                          "write the program anyway");
+    throw InfeasibleError(
+        "the plan is infeasible: " + (source.report.depositSummary.empty()
+                                          ? std::string("its report says it is not feasible")
+                                          : source.report.depositSummary),
+        "change the plan (spira-cli plan prints the change that works), or add --force to "
+        "write the program anyway");
   if (!cell) std::cerr << "note: no cell: the program's targets are torch poses in the part frame\n";
 
   ExportJob job;
@@ -231,7 +214,7 @@ int cmdExport(const std::vector<std::string>& argv)
   job.prep = prepParamsFrom(merged(source.settings.section("prep"), prepValues));
   job.cell = cell ? &*cell : nullptr;
   job.plannedCollision = source.plannedCollision;
-  job.header = programHeader(source.partName, source.cellName, source.report, source.reportName);
+  job.header = programHeader(source.partName, source.cellName, source.report);
   NullProgress progress;
   const ExportOutcome exported = exportTrajectory(registry, source.trajectory, job, outDir, progress);
   printExportSummary(exported, std::cout);

@@ -208,7 +208,7 @@ int cmdPlan(const std::vector<std::string>& argv)
     job.cell = cell ? &*cell : nullptr;
     if (motion)  // unresolved collisions of the plan are flagged in the program (refused unless forced)
       for (const JointPoint& p : motion->joints.points) job.plannedCollision.push_back(p.collision);
-    job.header = programHeader(positional[0], cellFile, report, "the plan's report");
+    job.header = programHeader(positional[0], cellFile, summarisePlanReport(report, "the plan's report"));
     const ExportOutcome exported = exportTrajectory(registry, finalPath, job, outDir, progress);
     printExportSummary(exported, std::cout);
     plan.timings.push_back({"export", exported.seconds});

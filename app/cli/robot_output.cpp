@@ -8,7 +8,6 @@
 #include <sstream>
 
 #include "cli_common.h"
-#include "spira/document/json_read.h"
 
 namespace spira::cli {
 
@@ -45,24 +44,18 @@ const ExporterPlugin& exporterFor(const PluginRegistry& registry, const std::str
 }
 
 std::map<std::string, std::string> programHeader(const std::string& partFile, const std::string& cellFile,
-                                                 const nlohmann::json& r, const std::string& reportName)
+                                                 const PlanReportSummary& r)
 {
-  using namespace json_read;
-  const std::string hint = "plan the part again, its report is damaged";
   std::map<std::string, std::string> h;
   h["part"] = std::filesystem::path(partFile).filename().string();
-  h["cell"] =
-      cellFile.empty() ? "none (targets in the part frame)" : text(r, "cell", cellFile, reportName, hint);
+  h["cell"] = cellFile.empty() ? "none (targets in the part frame)" : r.cell.empty() ? cellFile : r.cell;
   const std::time_t now = programTime();
   std::ostringstream date;
   date << std::put_time(std::gmtime(&now), "%Y-%m-%d %H:%M UTC");
   h["date"] = date.str();
   std::ostringstream plan;
-  plan << std::setprecision(4) << text(r, "part_type", "", reportName, hint) << " part, "
-       << wholeNumber(r, "n_revolutions", 0, reportName, hint) << " revolutions, deposit "
-       << number(r, "height_min", 0.0, reportName, hint) << " .. "
-       << number(r, "height_max", 0.0, reportName, hint) << " mm, path "
-       << number(r, "path_length", 0.0, reportName, hint) << " mm";
+  plan << std::setprecision(4) << r.partType << " part, " << r.revolutions << " revolutions, deposit "
+       << r.heightMin << " .. " << r.heightMax << " mm, path " << r.pathLength << " mm";
   h["plan"] = plan.str();
   return h;
 }

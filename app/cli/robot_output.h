@@ -6,6 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "spira/document/plan_report.h"
 #include "spira/pipeline/export_job.h"
 #include "spira/planning/planner.h"
 
@@ -15,11 +16,9 @@ namespace spira::cli {
 // Throws UsageError listing the formats for anything else.
 const ExporterPlugin& exporterFor(const PluginRegistry& registry, const std::string& format);
 
-// The header block of an exported program: part, cell, date and the plan's key figures. `reportName`
-// names where the report was read from (a field of the wrong type is an InputError naming it).
+// The header block of an exported program: part, cell, date and the plan's key figures.
 std::map<std::string, std::string> programHeader(const std::string& partFile, const std::string& cellFile,
-                                                 const nlohmann::json& planReport,
-                                                 const std::string& reportName);
+                                                 const PlanReportSummary& plan);
 
 void printMotionSummary(const nlohmann::json& motionReport, std::ostream& out);
 void printExportSummary(const ExportOutcome& exported, std::ostream& out);

@@ -101,6 +101,36 @@ TEST_F(HostileReport, StringHeightIsRefused)
   EXPECT_TRUE(has(r.err, "field 'height_max' must be a number, found the string \"tall\"")) << r.err;
 }
 
+// A verdict that is not true or false must not let an infeasible plan through as if it had none.
+TEST_F(HostileReport, VerdictOfTheWrongTypeIsRefusedNotIgnored)
+{
+  const CliRun r = exportPlan(editedPlan("feasible", "no"));
+  EXPECT_EQ(r.exitCode, 3) << r.err;
+  EXPECT_TRUE(has(r.err, "field 'feasible' must be true or false, found the string \"no\"")) << r.err;
+  if (fs::exists(tmp_ / "program")) {
+    for (const auto& e : fs::directory_iterator(tmp_ / "program"))
+      EXPECT_NE(e.path().extension(), ".src") << "a program was written from a damaged report";
+  }
+}
+
+TEST_F(HostileReport, InfeasibleVerdictQuotesTheDepositCheckSummary)
+{
+  const fs::path plan = editedPlan("feasible", false);
+  nlohmann::json report = nlohmann::json::parse(slurp(plan / "report.json"));
+  report["deposit_check"]["summary"] = "3 points rejected: 2 thin, 1 jump";
+  writeBytes(plan / "report.json", report.dump(2));
+  const CliRun r = exportPlan(plan);
+  EXPECT_EQ(r.exitCode, 4) << r.err;
+  EXPECT_TRUE(has(r.err, "the plan is infeasible: 3 points rejected: 2 thin, 1 jump")) << r.err;
+}
+
+TEST_F(HostileReport, DepositCheckThatIsNotAnObjectIsRefused)
+{
+  const CliRun r = exportPlan(editedPlan("deposit_check", 7));
+  EXPECT_EQ(r.exitCode, 3) << r.err;
+  EXPECT_TRUE(has(r.err, "'deposit_check' should be an object, found the number 7")) << r.err;
+}
+
 TEST_F(HostileReport, HugeStringIsClippedInTheMessage)
 {
   const CliRun r = exportPlan(editedPlan("n_revolutions", std::string(100000, 'y')));

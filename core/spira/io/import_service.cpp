@@ -141,26 +141,11 @@ ImportedMesh readWith(const ImporterPlugin& importer, const fs::path& file, cons
 
 }  // namespace
 
-ImportedPart importPart(const PluginRegistry& registry, const fs::path& file, const ParamSet* importerParams,
-                        Progress& progress)
+ImportedPart finishImport(ImportedMesh raw, LengthUnit unit, const std::string& source, Progress& progress)
 {
-  checkReadableFile(file);
-  const ImporterPlugin& importer = registry.importerForFile(file.filename().string());
-  const ParamSet params = (importerParams ? *importerParams : ParamSet()).withDefaults(importer.schema());
-  importer.schema().validate(params);
-  const std::string source = file.filename().string();
-  std::error_code ec;
-  if (fs::file_size(file, ec) == 0 && !ec)
-    throw InputError("'" + source + "' is empty (0 bytes)", "choose the right file or export the part again");
-
   ImportedPart part;
-  part.importerId = importer.id();
   Stopwatch clock;
-
-  SubProgress readProgress(progress, 0.0, 0.6, "Reading");
-  ImportedMesh raw = readWith(importer, file, params, readProgress);
   part.warnings = std::move(raw.warnings);
-  const LengthUnit unit = resolveUnit(raw, importer, params);
   part.sourceUnit = raw.fileUnit.value_or(unit);
   const double scale = millimetresPer(unit);
   if (scale != 1.0)
@@ -181,6 +166,29 @@ ImportedPart importPart(const PluginRegistry& registry, const fs::path& file, co
   if (auto unitNote = unitWarning(part.report.bounds, unit)) part.warnings.push_back(*unitNote);
   part.seconds.validate = clock.lap();
   progress.report(1.0, "Imported");
+  return part;
+}
+
+ImportedPart importPart(const PluginRegistry& registry, const fs::path& file, const ParamSet* importerParams,
+                        Progress& progress)
+{
+  checkReadableFile(file);
+  const ImporterPlugin& importer = registry.importerForFile(file.filename().string());
+  const ParamSet params = (importerParams ? *importerParams : ParamSet()).withDefaults(importer.schema());
+  importer.schema().validate(params);
+  const std::string source = file.filename().string();
+  std::error_code ec;
+  if (fs::file_size(file, ec) == 0 && !ec)
+    throw InputError("'" + source + "' is empty (0 bytes)", "choose the right file or export the part again");
+
+  Stopwatch clock;
+  SubProgress readProgress(progress, 0.0, 0.6, "Reading");
+  ImportedMesh raw = readWith(importer, file, params, readProgress);
+  const double readSeconds = clock.lap();
+  const LengthUnit unit = resolveUnit(raw, importer, params);
+  ImportedPart part = finishImport(std::move(raw), unit, source, progress);
+  part.importerId = importer.id();
+  part.seconds.read += readSeconds;
   return part;
 }
 

@@ -46,4 +46,10 @@ struct ImportedPart {
 ImportedPart importPart(const PluginRegistry& registry, const std::filesystem::path& file,
                         const ParamSet* importerParams, Progress& progress);
 
+// What importPart does once the importer has read the file: converts `raw` from `unit` to
+// millimetres, refuses what cannot be welded (no triangles, corners outside the vertex list,
+// non-finite coordinates; `source` names the file), welds and validates. Throws InputError,
+// Cancelled.
+ImportedPart finishImport(ImportedMesh raw, LengthUnit unit, const std::string& source, Progress& progress);
+
 }  // namespace spira
