@@ -7,6 +7,7 @@
 
 #include "cli_runner.h"
 #include "spira/base/units.h"
+#include "spira/io/mesh_writers.h"
 #include "support/test_support.h"
 
 namespace fs = std::filesystem;
@@ -80,6 +81,38 @@ TEST(CliInfo, NonManifoldPartIsReportedWithPositions)
   EXPECT_EQ(j["issues"][0]["kind"], "non_manifold_vertex");
   EXPECT_EQ(j["issues"][0]["count"], 1);
   EXPECT_FALSE(j["plannable"].get<bool>());
+}
+
+// A single triangle or a flat strip is a clean mesh but no part: nothing rises from its edge.
+TEST(CliInfo, EdgeOnlyPartsAreNotCalledPlannable)
+{
+  TempDir dir;
+  writeBytes(
+      dir / "triangle.stl",
+      "solid t\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 100 0 0\nvertex 0 100 0\nendloop\n"
+      "endfacet\nendsolid t\n");
+  TriangleMesh strip;
+  for (int i = 0; i <= 4; ++i) {
+    strip.vertices.push_back(Vec3(50.0 * i, 0, 0));
+    strip.vertices.push_back(Vec3(50.0 * i, 5, 0));
+  }
+  for (int i = 0; i < 4; ++i) {
+    strip.faces.push_back({2 * i, 2 * i + 2, 2 * i + 3});
+    strip.faces.push_back({2 * i, 2 * i + 3, 2 * i + 1});
+  }
+  writeMesh(strip, dir / "strip.stl", MeshFileFormat::StlBinary);
+  for (const char* name : {"triangle.stl", "strip.stl"}) {
+    const CliRun r = runCli({"info", (dir / name).string(), "--json"});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const auto j = nlohmann::json::parse(r.out);
+    EXPECT_EQ(j["part_class"], "unsupported") << name;
+    EXPECT_TRUE(j["issues"].empty()) << name << j["issues"].dump();
+    EXPECT_FALSE(j["plannable"].get<bool>()) << name;
+    const CliRun text = runCli({"info", (dir / name).string()});
+    EXPECT_NE(text.out.find("Plannable: no, the part has no wall"), std::string::npos) << text.out;
+    const CliRun plan = runCli({"plan", (dir / name).string(), "-o", (dir / "plan").string()});
+    EXPECT_EQ(plan.exitCode, 3) << name << plan.err;
+  }
 }
 
 TEST(CliExitCodes, BadInputIsThreeWithOneLineCauseAndHint)

@@ -123,6 +123,11 @@ const char* MeshReport::className() const
   return partClassName(partClass);
 }
 
+bool MeshReport::hasNoWall() const
+{
+  return !boundaryLoops.empty() && boundaryLoops.size() <= 2 && partClass == PartClass::Unsupported;
+}
+
 bool MeshReport::isPlannable() const
 {
   // A mesh whose every face is degenerate has no surface at all.
@@ -163,6 +168,7 @@ std::string MeshReport::toText() const
   s << "Connected components: " << componentCount << "\n";
   s << "Part class: " << className() << " - " << classReason << "\n";
   s << "Mesh defects that stop planning: " << (isPlannable() ? "none" : "yes (see the issues above)") << "\n";
+  if (hasNoWall()) s << "Plannable: no, the part has no wall (see its class above)\n";
   return s.str();
 }
 
@@ -198,7 +204,7 @@ nlohmann::json MeshReport::toJson() const
   j["component_count"] = componentCount;
   j["part_class"] = className();
   j["class_reason"] = classReason;
-  j["plannable"] = isPlannable();
+  j["plannable"] = isPlannable() && !hasNoWall();
   return j;
 }
 

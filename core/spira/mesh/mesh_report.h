@@ -57,6 +57,9 @@ struct MeshReport {
   // class is separate: an Unsupported part may be plannable as a mesh but not as a part.
   // No defect stops planning (the class may still be one Spira refuses).
   bool isPlannable() const;
+  // One or two boundary loops but no wall between them: every vertex lies on the edge (a single
+  // triangle, a flat strip or fan). No strategy plans such a part, whatever its defects.
+  bool hasNoWall() const;
   // partClassName(), or "multi_branch" for one connected wall with more than two free edges.
   const char* className() const;
   std::string toText() const;

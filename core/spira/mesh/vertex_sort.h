@@ -64,6 +64,7 @@ VertexSorted<Item> sortByVertex(size_t n, size_t vertexCount, const Emit& emit)
                       for (size_t v = r.begin(); v != r.end(); ++v) {
                         Item* b = out.items.data() + out.offset[v];
                         Item* e = out.items.data() + out.offset[v + 1];
+                        if (e - b < 2) continue;  // also when there are no items at all (data() null)
                         if (e - b > 24) {
                           std::sort(b, e);
                           continue;

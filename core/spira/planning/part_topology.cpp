@@ -55,7 +55,7 @@ PartTopology findPartTopology(const MeshReport& report, const TriangleMesh& mesh
     throw InputError("the part has no piece to plan", "import a part with a surface");
   const auto& loops = report.boundaryLoops;
   // One or two edges but no wall: every vertex is on its edge.
-  if (!loops.empty() && loops.size() <= 2 && report.partClass == PartClass::Unsupported)
+  if (report.hasNoWall())
     throw InputError("the part cannot be planned: " + report.classReason,
                      "import a thin wall that rises from its base edge (spira-cli info shows how it reads)");
   if (loops.empty())
