@@ -73,7 +73,8 @@ TEST(ObjHostile, EmptyFile)
 
 TEST(ObjHostile, FiveMegabyteTokensAreRefusedWithoutEchoingThem)
 {
-  // Assimp read the 5 MB coordinate as a small number and imported the part.
+  // Assimp read the 5 MB coordinate as a small number and imported the part, and ran for minutes on
+  // the 5 MB corner.
   const std::string digits(5'000'000, '1');
   const std::string clipped = std::string(40, '1') + "...'";
   TempDir dir;
