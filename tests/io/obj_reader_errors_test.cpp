@@ -93,7 +93,8 @@ TEST(ObjReaderErrors, FilesWithoutASurface)
   EXPECT_TRUE(refuses(" \n\t\r\n# only a comment\n", "'test.obj' has no faces ('f' lines) and no vertices"));
   EXPECT_TRUE(
       refuses(kTriangle + "l 1 2 3\np 1\n", "'test.obj' has no faces ('f' lines): it holds 3 vertices only"));
-  EXPECT_TRUE(refuses(kTriangle + "f 1 2\nf\n", "'test.obj' has 2 faces, none with three or more corners"));
+  EXPECT_TRUE(refuses(kTriangle + "f 1 2\nf\n",
+                      "'test.obj' has no face with three or more corners (only 2 with fewer)"));
 }
 
 TEST(ObjReaderErrors, LongTokensAreClippedInTheMessage)

@@ -6,6 +6,7 @@
 #include "spira/base/error.h"
 #include "spira/base/number_text.h"
 #include "spira/io/mapped_file.h"
+#include "spira/io/polygon_fan.h"
 
 namespace spira {
 namespace {
@@ -59,11 +60,6 @@ Statement statementOf(std::string_view keyword)
   for (const char* k : {"vt", "vn", "vp", "o", "g", "s", "usemtl", "mtllib", "l", "p"})
     if (keyword == k) return Statement::Ignored;
   return Statement::Unknown;
-}
-
-std::string faces(size_t n)
-{
-  return n == 1 ? std::string("1 face") : std::to_string(n) + " faces";
 }
 
 class ObjParser {
@@ -214,13 +210,7 @@ class ObjParser {
   {
     loop_.clear();
     for (std::string_view t = token(); !t.empty(); t = token()) loop_.push_back(corner(t));
-    if (loop_.size() < 3) {
-      ++out_.degenerateFaces;
-      return;
-    }
-    if (loop_.size() > 3) ++out_.polygonFaces;
-    for (size_t c = 1; c + 1 < loop_.size(); ++c)
-      out_.mesh.faces.push_back({loop_[0], loop_[c], loop_[c + 1]});
+    fan_.add(loop_, out_.mesh.faces);
   }
 
   // The vertex a corner `v`, `v/vt`, `v//vn` or `v/vt/vn` names, as a 0-based index.
@@ -268,11 +258,13 @@ class ObjParser {
 
   void finish()
   {
+    out_.polygonFaces = fan_.polygonFaces;
+    out_.degenerateFaces = fan_.degenerateFaces;
     if (out_.mesh.faces.empty()) {
       if (out_.degenerateFaces > 0)
-        throw InputError(
-            "'" + source_ + "' has " + faces(out_.degenerateFaces) + ", none with three or more corners",
-            kNoSurfaceHint);
+        throw InputError("'" + source_ + "' has no face with three or more corners (only " +
+                             std::to_string(out_.degenerateFaces) + " with fewer)",
+                         kNoSurfaceHint);
       const size_t n = out_.mesh.vertices.size();
       throw InputError(
           "'" + source_ + "' has no faces ('f' lines)" +
@@ -280,12 +272,7 @@ class ObjParser {
                       : ": it holds " + std::to_string(n) + (n == 1 ? " vertex" : " vertices") + " only"),
           kNoSurfaceHint);
     }
-    if (out_.polygonFaces > 0)
-      out_.warnings.push_back(faces(out_.polygonFaces) + " in '" + source_ +
-                              "' with more than three corners split into triangles");
-    if (out_.degenerateFaces > 0)
-      out_.warnings.push_back(faces(out_.degenerateFaces) + " in '" + source_ +
-                              "' with fewer than three corners ignored");
+    fan_.appendWarnings(source_, out_.warnings);
     if (out_.unknownStatements > 0)
       out_.warnings.push_back(
           "'" + source_ + "': " +
@@ -307,6 +294,7 @@ class ObjParser {
   size_t pos_ = 0;
   size_t line_ = 1;
   std::vector<int> loop_;
+  PolygonFan fan_;
   std::string firstUnknown_;
   size_t firstUnknownLine_ = 0;
 };
