@@ -50,9 +50,9 @@ std::string_view withoutBom(std::string_view s)
   return s;
 }
 
-// Lines that start a vertex statement, at most one per 8 bytes (the shortest, "v 0 0 0\n"): reserving
-// that many vertices up front halves the peak memory of a large file, where growing the list by
-// doubling holds the old and the new copy at once, and it can never exceed 3 bytes per file byte.
+// Lines that start a vertex statement, at most one per 8 bytes (the shortest is "v 0 0 0\n").
+// Reserving them up front spares a large file the growth by doubling, which holds the old and the
+// new copy at once; whatever the file holds, the reserve stays within 3 bytes per file byte.
 size_t vertexLines(std::string_view text)
 {
   size_t n = 0;
