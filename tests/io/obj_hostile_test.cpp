@@ -4,6 +4,8 @@
 // for .obj.
 #include <gtest/gtest.h>
 
+#include <utility>
+
 #include "io_test_util.h"
 #include "support/test_support.h"
 
@@ -15,60 +17,32 @@ std::filesystem::path hostile(const std::string& name)
   return sourceDir() / "tests" / "data" / "hostile" / "obj" / name;
 }
 
-TEST(ObjHostile, TruncatedInsideAVertex)
+TEST(ObjHostile, EveryStoredFileIsRefusedNamingTheLine)
 {
-  EXPECT_TRUE(refusedImport(hostile("truncated.obj"),
-                            "'truncated.obj' line 6: the vertex has 2 coordinates; 'v' needs x, y and z"));
-}
-
-TEST(ObjHostile, BinaryGarbage)
-{
-  EXPECT_TRUE(
-      refusedImport(hostile("binary_garbage.obj"),
-                    "'binary_garbage.obj' line 1: the file holds binary data (a byte 0x05), not OBJ text"));
-}
-
-TEST(ObjHostile, CornerIndexZero)
-{
-  EXPECT_TRUE(refusedImport(hostile("index_zero.obj"),
-                            "'index_zero.obj' line 4: the face corner '0' names vertex 0, but OBJ numbers "
-                            "vertices from 1"));
-}
-
-TEST(ObjHostile, CornerIndexBeyondTheVertexCount)
-{
-  EXPECT_TRUE(refusedImport(hostile("index_beyond_count.obj"),
-                            "'index_beyond_count.obj' line 5: the face corner '9' names vertex 9, but only 4 "
-                            "vertices are defined above it"));
-}
-
-TEST(ObjHostile, HugeNegativeIndex)
-{
-  EXPECT_TRUE(refusedImport(hostile("huge_negative_index.obj"),
-                            "'huge_negative_index.obj' line 4: the face corner '-9223372036854775808' names "
-                            "vertex -9223372036854775808, but only 3 vertices"));
-}
-
-TEST(ObjHostile, FacesBeforeTheirVertices)
-{
-  // Assimp read this one as a triangle without a word.
-  EXPECT_TRUE(refusedImport(hostile("faces_before_vertices.obj"),
-                            "'faces_before_vertices.obj' line 1: the face corner '1' names vertex 1, but no "
-                            "vertex is defined above it"));
-}
-
-TEST(ObjHostile, CoordinatesBeyondDoubleAndNotANumber)
-{
-  EXPECT_TRUE(
-      refusedImport(hostile("huge_exponent.obj"),
-                    "'huge_exponent.obj' line 2: the coordinate '1e400' is beyond the range of a double"));
-  EXPECT_TRUE(
-      refusedImport(hostile("nan.obj"), "'nan.obj' line 2: the coordinate 'nan' is not a finite number"));
-}
-
-TEST(ObjHostile, EmptyFile)
-{
-  EXPECT_TRUE(refusedImport(hostile("empty.obj"), "'empty.obj' is empty (0 bytes)"));
+  // What Assimp did with each is in tests/data/hostile/obj/README.md; faces_before_vertices.obj it
+  // imported without a word.
+  const std::pair<const char*, const char*> cases[] = {
+      {"truncated.obj", "'truncated.obj' line 6: the vertex has 2 coordinates; 'v' needs x, y and z"},
+      {"binary_garbage.obj",
+       "'binary_garbage.obj' line 1: the file holds binary data (a byte 0x05), not OBJ text"},
+      {"index_zero.obj",
+       "'index_zero.obj' line 4: the face corner '0' names vertex 0, but OBJ numbers vertices from 1"},
+      {"index_beyond_count.obj",
+       "'index_beyond_count.obj' line 5: the face corner '9' names vertex 9, but only 4 vertices are defined "
+       "above it"},
+      {"huge_negative_index.obj",
+       "'huge_negative_index.obj' line 4: the face corner '-9223372036854775808' names vertex "
+       "-9223372036854775808, "
+       "but only 3 vertices"},
+      {"faces_before_vertices.obj",
+       "'faces_before_vertices.obj' line 1: the face corner '1' names vertex 1, but no vertex is defined "
+       "above it"},
+      {"huge_exponent.obj",
+       "'huge_exponent.obj' line 2: the coordinate '1e400' is beyond the range of a double"},
+      {"nan.obj", "'nan.obj' line 2: the coordinate 'nan' is not a finite number"},
+      {"empty.obj", "'empty.obj' is empty (0 bytes)"},
+  };
+  for (const auto& [name, message] : cases) EXPECT_TRUE(refusedImport(hostile(name), message)) << name;
 }
 
 TEST(ObjHostile, FiveMegabyteTokensAreRefusedWithoutEchoingThem)
