@@ -97,4 +97,31 @@ double maxDistanceToRevolvedLine(const TriangleMesh& m, double r0, double r1, do
   return worst;
 }
 
+::testing::AssertionResult refusedImport(const std::filesystem::path& file, const std::string& mustContain)
+{
+  const auto r = throwsOneLine<InputError>([&] { importFile(file); }, mustContain);
+  if (!r) return r;
+  try {
+    importFile(file);
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    for (const char* internal :
+         {"aiMesh", "aiScene", "Validation failed", "mIndices", "File corrupted", "OBJ: "})
+      if (what.find(internal) != std::string::npos)
+        return ::testing::AssertionFailure() << "library text in '" << what << "'";
+    if (what.find(file.filename().string()) == std::string::npos)
+      return ::testing::AssertionFailure() << "'" << what << "' does not name the file";
+  }
+  return r;
+}
+
+::testing::AssertionResult hasImportWarning(const ImportedPart& part, const std::string& text)
+{
+  for (const std::string& w : part.warnings)
+    if (w.find(text) != std::string::npos) return ::testing::AssertionSuccess();
+  auto failure = ::testing::AssertionFailure() << "no warning with '" << text << "' among:";
+  for (const std::string& w : part.warnings) failure << "\n  " << w;
+  return failure;
+}
+
 }  // namespace spira::test

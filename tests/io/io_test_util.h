@@ -54,4 +54,11 @@ template <class E, class F>
   return ::testing::AssertionFailure() << "no exception";
 }
 
+// An import refused as InputError on one line with a hint, naming the file and `mustContain`, with
+// none of Assimp's own words.
+::testing::AssertionResult refusedImport(const std::filesystem::path& file, const std::string& mustContain);
+
+// Whether one of the import's warnings contains `text` (the failure lists them all).
+::testing::AssertionResult hasImportWarning(const ImportedPart& part, const std::string& text);
+
 }  // namespace spira::test

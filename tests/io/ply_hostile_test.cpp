@@ -21,40 +21,13 @@ std::filesystem::path hostile(const std::string& name)
   return sourceDir() / "tests" / "data" / "hostile" / "ply" / name;
 }
 
-// A refusal as InputError, on one line with a hint, naming `mustContain` and no Assimp internals.
-::testing::AssertionResult refused(const std::filesystem::path& file, const std::string& mustContain)
-{
-  const auto r = throwsOneLine<InputError>([&] { importFile(file); }, mustContain);
-  if (!r) return r;
-  try {
-    importFile(file);
-  } catch (const InputError& e) {
-    const std::string what = e.what();
-    for (const char* internal : {"aiMesh", "Validation failed", "mIndices", "File corrupted"})
-      if (what.find(internal) != std::string::npos)
-        return ::testing::AssertionFailure() << "library text in '" << what << "'";
-    if (what.find(file.filename().string()) == std::string::npos)
-      return ::testing::AssertionFailure() << "'" << what << "' does not name the file";
-  }
-  return r;
-}
-
-::testing::AssertionResult hasWarning(const ImportedPart& part, const std::string& text)
-{
-  for (const std::string& w : part.warnings)
-    if (w.find(text) != std::string::npos) return ::testing::AssertionSuccess();
-  auto failure = ::testing::AssertionFailure() << "no warning with '" << text << "' among:";
-  for (const std::string& w : part.warnings) failure << "\n  " << w;
-  return failure;
-}
-
 TEST(PlyHostile, FaceWithoutCornersIsDroppedWithAWarning)
 {
   // Assimp aborted on this one (an assertion in its triangulation).
   const ImportedPart part = importFile(hostile("empty_face.ply"));
   ASSERT_EQ(part.mesh.faceCount(), 1u);
   EXPECT_NEAR(part.mesh.area(), 0.5, 1e-12);
-  EXPECT_TRUE(hasWarning(part, "1 face in 'empty_face.ply' with fewer than three corners ignored"));
+  EXPECT_TRUE(hasImportWarning(part, "1 face in 'empty_face.ply' with fewer than three corners ignored"));
 }
 
 TEST(PlyHostile, OnlyFacesWithoutCornersIsNoSurface)
@@ -64,14 +37,14 @@ TEST(PlyHostile, OnlyFacesWithoutCornersIsNoSurface)
       dir / "corners.ply",
       "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
       "element face 2\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n0\n2 0 1\n");
-  EXPECT_TRUE(refused(dir / "corners.ply", "contains no triangles"));
+  EXPECT_TRUE(refusedImport(dir / "corners.ply", "contains no triangles"));
 }
 
 TEST(PlyHostile, CornerIndexOutOfRangeNamesFaceLineAndVertexCount)
 {
-  EXPECT_TRUE(refused(hostile("index_out_of_range.ply"),
-                      "'index_out_of_range.ply' line 14: face 0 refers to vertex 9, but the file has 4 "
-                      "vertices (indices 0 to 3)"));
+  EXPECT_TRUE(refusedImport(hostile("index_out_of_range.ply"),
+                            "'index_out_of_range.ply' line 14: face 0 refers to vertex 9, but the file has 4 "
+                            "vertices (indices 0 to 3)"));
 }
 
 TEST(PlyHostile, NegativeAndOutOfRangeBinaryIndicesNameTheByte)
@@ -86,22 +59,24 @@ TEST(PlyHostile, NegativeAndOutOfRangeBinaryIndicesNameTheByte)
     std::memcpy(bytes.data() + at, &bad, 4);
     TempDir dir;
     writeBytes(dir / "bad.ply", bytes);
-    EXPECT_TRUE(refused(dir / "bad.ply", "'bad.ply' byte " + std::to_string(at + 4) +
-                                             ": face 2 refers to vertex " + std::to_string(bad)))
+    EXPECT_TRUE(refusedImport(dir / "bad.ply", "'bad.ply' byte " + std::to_string(at + 4) +
+                                                   ": face 2 refers to vertex " + std::to_string(bad)))
         << bad;
   }
 }
 
 TEST(PlyHostile, HeaderCutInsideTheFormatLine)
 {
-  EXPECT_TRUE(refused(hostile("cut_in_format.ply"), "no 'end_header' line before the file ends (line 2)"));
+  EXPECT_TRUE(
+      refusedImport(hostile("cut_in_format.ply"), "no 'end_header' line before the file ends (line 2)"));
 }
 
 TEST(PlyHostile, HeaderWithoutEndHeaderBeforeTheData)
 {
-  EXPECT_TRUE(refused(hostile("no_end_header.ply"),
-                      "'no_end_header.ply' line 9: the PLY header has '0', which is not a PLY header keyword "
-                      "(the 'end_header' line is missing before the data)"));
+  EXPECT_TRUE(
+      refusedImport(hostile("no_end_header.ply"),
+                    "'no_end_header.ply' line 9: the PLY header has '0', which is not a PLY header keyword "
+                    "(the 'end_header' line is missing before the data)"));
 }
 
 TEST(PlyHostile, HeaderThatNeverEndsIsRefusedAfter64KiB)
@@ -111,16 +86,16 @@ TEST(PlyHostile, HeaderThatNeverEndsIsRefusedAfter64KiB)
   while (bytes.size() < (size_t{1} << 20)) bytes += "comment no end in sight\n";
   TempDir dir;
   writeBytes(dir / "endless.ply", bytes);
-  EXPECT_TRUE(refused(dir / "endless.ply", "no 'end_header' line in its first 65536 bytes"));
+  EXPECT_TRUE(refusedImport(dir / "endless.ply", "no 'end_header' line in its first 65536 bytes"));
 }
 
 TEST(PlyHostile, DeclaredCountsBeyondTheFileSizeAreRefusedBeforeAllocating)
 {
   // 167 bytes declaring 99,999,999 vertices: Assimp allocated 3.5 GB and read for minutes.
   EXPECT_TRUE(
-      refused(hostile("huge_vertex_count.ply"),
-              "'huge_vertex_count.ply': the PLY header declares 99999999 vertices, 1 face, which take "
-              "at least 599999995 bytes, but only 6 bytes follow the header"));
+      refusedImport(hostile("huge_vertex_count.ply"),
+                    "'huge_vertex_count.ply': the PLY header declares 99999999 vertices, 1 face, which take "
+                    "at least 599999995 bytes, but only 6 bytes follow the header"));
 }
 
 TEST(PlyHostile, BinaryCountsBeyondTheFileSizeAndBeyond64Bits)
@@ -133,15 +108,15 @@ TEST(PlyHostile, BinaryCountsBeyondTheFileSizeAndBeyond64Bits)
              count + "\nproperty list uchar int vertex_indices\n");
     for (int i = 0; i < 9; ++i) b.put(0.0);
     writeBytes(dir / "count.ply", b.bytes);
-    EXPECT_TRUE(
-        refused(dir / "count.ply", std::string("3 vertices, ") + count + " faces, which take at least"));
+    EXPECT_TRUE(refusedImport(dir / "count.ply",
+                              std::string("3 vertices, ") + count + " faces, which take at least"));
   }
 }
 
 TEST(PlyHostile, AsciiTruncatedAfterHalfItsFacesIsRefused)
 {
-  EXPECT_TRUE(refused(hostile("truncated_faces.ply"),
-                      "'truncated_faces.ply' ends after 1 of the 2 faces its PLY header declares"));
+  EXPECT_TRUE(refusedImport(hostile("truncated_faces.ply"),
+                            "'truncated_faces.ply' ends after 1 of the 2 faces its PLY header declares"));
 }
 
 TEST(PlyHostile, BinaryTruncatedAfterHalfItsFacesIsRefused)
@@ -153,8 +128,9 @@ TEST(PlyHostile, BinaryTruncatedAfterHalfItsFacesIsRefused)
   const size_t cut = body + 12 * m.vertexCount() + 13 * (faces / 2) + 7;  // inside the next face
   TempDir dir;
   writeBytes(dir / "half.ply", bytes.substr(0, cut));
-  EXPECT_TRUE(refused(dir / "half.ply", "'half.ply' ends after " + std::to_string(faces / 2) + " of the " +
-                                            std::to_string(faces) + " faces its PLY header declares"));
+  EXPECT_TRUE(refusedImport(dir / "half.ply", "'half.ply' ends after " + std::to_string(faces / 2) +
+                                                  " of the " + std::to_string(faces) +
+                                                  " faces its PLY header declares"));
 }
 
 TEST(PlyHostile, TrailingBytesAreImportedWithAWarning)
@@ -167,7 +143,7 @@ TEST(PlyHostile, TrailingBytesAreImportedWithAWarning)
   writeBytes(dir / "tail.ply", bytes);
   const ImportedPart part = importFile(dir / "tail.ply");
   EXPECT_EQ(part.mesh.faceCount(), 4u);
-  EXPECT_TRUE(hasWarning(
+  EXPECT_TRUE(hasImportWarning(
       part, "'tail.ply' byte " + std::to_string(end) + ": the 7 bytes after the last element were ignored"));
 }
 
@@ -178,7 +154,7 @@ TEST(PlyHostile, NonFiniteCoordinatesAreRefusedByTheImport)
              "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
              "element face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 nan 0\n0 1 0\n"
              "3 0 1 2\n");
-  EXPECT_TRUE(refused(dir / "nan.ply", "1 vertices have non-finite coordinates"));
+  EXPECT_TRUE(refusedImport(dir / "nan.ply", "1 vertices have non-finite coordinates"));
 }
 
 }  // namespace

@@ -13,7 +13,7 @@ struct SceneTriangles {
   size_t skippedPrimitives = 0;  // points and lines, which a part surface cannot use
 };
 
-// Flattens an Assimp scene (part imports and robot link meshes). Vertices are copied as Assimp
+// Flattens an Assimp scene (robot link meshes). Vertices are copied as Assimp
 // holds them (per-face unless the file shares them); welding is the caller's job.
 SceneTriangles collectSceneTriangles(const aiScene& scene);
 

@@ -6,6 +6,7 @@
 #include "spira/base/error.h"
 #include "spira/io/mapped_file.h"
 #include "spira/io/ply_body_cursor.h"
+#include "spira/io/polygon_fan.h"
 
 namespace spira {
 namespace {
@@ -256,13 +257,7 @@ class PlyParser {
         loop_.push_back(static_cast<int>(v));
       }
     }
-    if (loop_.size() < 3) {
-      ++out_.degenerateFaces;
-      return;
-    }
-    if (loop_.size() > 3) ++out_.polygonFaces;
-    for (size_t c = 1; c + 1 < loop_.size(); ++c)
-      out_.mesh.faces.push_back({loop_[0], loop_[c], loop_[c + 1]});
+    fan_.add(loop_, out_.mesh.faces);
   }
 
   void checkTrailing(AsciiCursor& cursor)
@@ -283,13 +278,9 @@ class PlyParser {
 
   void addCountWarnings()
   {
-    const auto faces = [](size_t n) { return n == 1 ? std::string("1 face") : std::to_string(n) + " faces"; };
-    if (out_.polygonFaces > 0)
-      out_.warnings.push_back(faces(out_.polygonFaces) + " in '" + source_ +
-                              "' with more than three corners split into triangles");
-    if (out_.degenerateFaces > 0)
-      out_.warnings.push_back(faces(out_.degenerateFaces) + " in '" + source_ +
-                              "' with fewer than three corners ignored");
+    out_.polygonFaces = fan_.polygonFaces;
+    out_.degenerateFaces = fan_.degenerateFaces;
+    fan_.appendWarnings(source_, out_.warnings);
   }
 
   template <class Cursor>
@@ -337,6 +328,7 @@ class PlyParser {
   int corners_ = -1;
   std::vector<int> axisOf_;  // per vertex property: 0, 1, 2 for x, y, z, else -1
   std::vector<int> loop_;
+  PolygonFan fan_;
 };
 
 }  // namespace
