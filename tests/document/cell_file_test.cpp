@@ -96,6 +96,9 @@ TEST(CellFile, BadFilesAreRefusedNamingTheField)
   EXPECT_EQ(cellFromText(minimalCell("", R"("part": {})"), "/tmp").robotUrdf, "/tmp/r.urdf");
   expectRejected("{ not json", "not valid JSON");
   expectRejected(R"({"spira_cell": 2})", "version 2");
+  expectRejected(R"({"spira_cell": 2.5})", "version 2.5 is not supported");
+  expectRejected(R"({"spira_cell": 77777777777777777777777777777771})",
+                 "version 7.77778e+31 is not supported");
   expectRejected(minimalCell("", R"("part": {"mount": "positioner"})"), "no positioner");
   expectRejected(minimalCell("", R"("part": {"mount": "ceiling"})"), "ceiling");
   expectRejected(minimalCell(R"("j23_coupling": 2, )", R"("part": {})"), "j23_coupling");

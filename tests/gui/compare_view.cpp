@@ -17,6 +17,7 @@
 #include <vtkRenderer.h>
 
 #include "builtin_plugins.h"
+#include "spira/base/atomic_file.h"
 #include "spira/base/units.h"
 #include "spira/document/document.h"
 #include "spira/ui/color_maps.h"
@@ -122,6 +123,44 @@ TEST(CompareView, ShowsTwoStrategiesFromFilesOnOneScaleAndCamera)
   EXPECT_FALSE(view.openFile(qpath(dir / "bad" / "compare.csv")));
   EXPECT_TRUE(view.statusLabel()->text().contains("strategy,x,y,z,height"))
       << view.statusLabel()->text().toStdString();
+}
+
+// Damaged comparison files are refused naming the file and the place, never with the JSON library's
+// own text or a crash.
+TEST(CompareView, DamagedComparisonFilesAreRefusedWithTheirPlace)
+{
+  TempDir dir;
+  writeComparisonFiles(madeUp(), dir.path());
+  const std::string csv = readFile(dir / "compare.csv");
+  struct Case {
+    std::string json;
+    std::string csv;
+    std::string expected;
+  };
+  const std::vector<Case> cases = {
+      {"{\"h\": 2, \"strategies\": [1, 2]}", csv,
+       "compare.json (strategy 1): expected an object, found the number 1"},
+      {"{\"strategies\": [{\"strategy\": 5}]}", csv, "(strategy 1): field 'strategy' must be a string"},
+      {"{\"strategies\": [{\"revolutions\": 1e30}]}", csv, "field 'revolutions' must be a whole number"},
+      {"{\"strategies\": [{\"n_paths\": -3}]}", csv, "field 'n_paths' must be a count from 0, found -3"},
+      {"{\"strategies\": [{\"ran\": \"yes\"}]}", csv, "field 'ran' must be true or false"},
+      {"{\"h\": 1e999, \"strategies\": []}", csv, "is beyond the range of a double"},
+      {"{\"strategies\": [", csv, "compare.json, line 1, column 17: the JSON text ends too early"},
+      {"{\"strategies\": []}", "strategy,x,y,z,height\nhelix,1,2,nan,2\n", "compare.csv line 2: 'nan'"},
+      {"{\"strategies\": []}", "strategy,x,y,z,height\nhelix,1,2,3," + std::string(100000, '7') + "e\n",
+       "compare.csv line 2: '7777"},
+  };
+  Document doc;
+  CompareView view(doc, builtinRegistry());
+  for (const Case& c : cases) {
+    writeBytes(dir / "compare.json", c.json);
+    writeBytes(dir / "compare.csv", c.csv);
+    EXPECT_FALSE(view.openFile(qpath(dir / "compare.json"))) << c.json;
+    const std::string status = view.statusLabel()->text().toStdString();
+    EXPECT_NE(status.find(c.expected), std::string::npos) << status;
+    EXPECT_EQ(status.find("json.exception"), std::string::npos) << status;
+    EXPECT_LT(status.size(), 600u) << "the message echoes the file";
+  }
 }
 
 TEST(CompareView, RunsEveryStrategyOnThePartInTheBackground)

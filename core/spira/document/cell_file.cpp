@@ -5,6 +5,7 @@
 
 #include "spira/base/atomic_file.h"
 #include "spira/base/error.h"
+#include "spira/base/number_text.h"
 #include "spira/base/units.h"
 #include "spira/document/json_read.h"
 
@@ -165,7 +166,7 @@ CellRecord cellFromText(const std::string& text, const std::filesystem::path& ba
   if (!j.is_object()) r.fail("top level", "must be a JSON object");
   const double version = r.number(j, "spira_cell", "top level");
   if (version != kCellFileVersion)
-    r.fail("top level", "format version " + std::to_string(static_cast<long long>(version)) +
+    r.fail("top level", "format version " + significantText(version, 6) +
                             " is not supported (this Spira reads version 1)");
   CellRecord c;
   c.name = r.text(j, "name", "top level");

@@ -49,7 +49,8 @@ class LocatingParser : public nlohmann::detail::json_sax_dom_parser<json> {
     if (ex.id == 406)
       throw InputError(where + "the number " + clip(token) + " is beyond the range of a double", hint_);
     if (token.empty() || position >= text_.size())
-      throw InputError(where + "the JSON text ends too early", hint_);
+      throw InputError(what_ + ", " + lineAndColumn(text_, text_.size()) + ": the JSON text ends too early",
+                       hint_);
     throw InputError(where + "unexpected '" + clip(token) + "' (not valid JSON)", hint_);
   }
 

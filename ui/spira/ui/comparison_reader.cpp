@@ -1,13 +1,18 @@
 #include "spira/ui/comparison_reader.h"
 
 #include <algorithm>
-#include <fstream>
+#include <cstdint>
+#include <limits>
 #include <map>
+#include <optional>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
 
+#include "spira/base/atomic_file.h"
 #include "spira/base/error.h"
+#include "spira/base/number_text.h"
+#include "spira/document/json_read.h"
 
 namespace spira::ui {
 
@@ -15,19 +20,24 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string slurp(const fs::path& file)
+constexpr const char* kJsonHint = "give the compare.json written by spira-cli compare";
+constexpr const char* kCsvHint = "give the compare.csv written by spira-cli compare";
+
+// A figure of compare.json; a strategy that failed has null (or nothing) there.
+double figure(const nlohmann::json& j, const char* key, const std::string& what)
 {
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw IoError("cannot read " + file.string(), "check that the file exists and is readable");
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
+  return j.contains(key) && !j[key].is_null() ? json_read::number(j, key, what, kJsonHint) : 0.0;
 }
 
-double num(const nlohmann::json& j, const char* key)
+// A count in compare.json: a whole number from 0, within what an int holds.
+int count(const nlohmann::json& j, const char* key, const std::string& what)
 {
-  const auto it = j.find(key);
-  return it != j.end() && it->is_number() ? it->get<double>() : 0.0;
+  if (!j.contains(key) || j[key].is_null()) return 0;
+  const std::int64_t n = json_read::wholeNumber(j, key, what, kJsonHint);
+  if (n < 0 || n > std::numeric_limits<int>::max())
+    throw InputError(what + ": field '" + key + "' must be a count from 0, found " + std::to_string(n),
+                     kJsonHint);
+  return static_cast<int>(n);
 }
 
 StrategyOutcome& outcomeFor(Comparison& c, const std::string& strategy)
@@ -44,45 +54,43 @@ StrategyOutcome& outcomeFor(Comparison& c, const std::string& strategy)
 
 void readJson(Comparison& c, const fs::path& file)
 {
-  nlohmann::json j;
-  try {
-    j = nlohmann::json::parse(slurp(file));
-  } catch (const nlohmann::json::exception& e) {
-    throw InputError(file.string() + " is not valid JSON: " + e.what(), "run spira-cli compare again");
-  }
-  c.h = num(j, "h");
-  c.hMin = num(j, "h_min");
-  c.hMax = num(j, "h_max");
-  c.tolerance = num(j, "height_tolerance_mm");
+  using namespace json_read;
+  const std::string what = file.string();
+  const nlohmann::json j = parse(readFile(file), what, kJsonHint);
+  if (!j.is_object()) throw InputError(what + ": expected a JSON object, found " + describe(j), kJsonHint);
+  c.h = figure(j, "h", what);
+  c.hMin = figure(j, "h_min", what);
+  c.hMax = figure(j, "h_max", what);
+  c.tolerance = figure(j, "height_tolerance_mm", what);
   const auto list = j.find("strategies");
-  if (list == j.end() || !list->is_array())
-    throw InputError(file.string() + " lists no strategies",
-                     "give the compare.json written by spira-cli compare");
-  for (const nlohmann::json& e : *list) {
-    StrategyOutcome& s = outcomeFor(c, e.value("strategy", std::string("?")));
-    s.kind = e.value("kind", s.kind);
-    s.ran = e.value("ran", false);
-    s.feasible = e.value("feasible", false);
+  if (list == j.end() || !list->is_array()) throw InputError(what + " lists no strategies", kJsonHint);
+  for (size_t i = 0; i < list->size(); ++i) {
+    const nlohmann::json& e = (*list)[i];
+    const std::string where = what + " (strategy " + std::to_string(i + 1) + ")";
+    if (!e.is_object()) throw InputError(where + ": expected an object, found " + describe(e), kJsonHint);
+    StrategyOutcome& s = outcomeFor(c, text(e, "strategy", "?", where, kJsonHint));
+    s.kind = text(e, "kind", s.kind, where, kJsonHint);
+    s.ran = e.contains("ran") && flag(e, "ran", where, kJsonHint);
+    s.feasible = e.contains("feasible") && flag(e, "feasible", where, kJsonHint);
     if (e.contains("failure") && e["failure"].is_string()) s.failure = e["failure"].get<std::string>();
-    s.generatrixLengthMin = num(e, "generatrix_length_min");
-    s.generatrixLengthMax = num(e, "generatrix_length_max");
-    s.depositMin = num(e, "deposit_min");
-    s.depositMax = num(e, "deposit_max");
-    s.depositMean = num(e, "deposit_mean");
-    s.outside = static_cast<size_t>(num(e, "points_outside_window"));
-    s.revolutions = static_cast<int>(num(e, "revolutions"));
-    s.paths = static_cast<size_t>(num(e, "n_paths"));
-    s.runtime = num(e, "runtime_s");
+    s.generatrixLengthMin = figure(e, "generatrix_length_min", where);
+    s.generatrixLengthMax = figure(e, "generatrix_length_max", where);
+    s.depositMin = figure(e, "deposit_min", where);
+    s.depositMax = figure(e, "deposit_max", where);
+    s.depositMean = figure(e, "deposit_mean", where);
+    s.outside = static_cast<size_t>(count(e, "points_outside_window", where));
+    s.revolutions = count(e, "revolutions", where);
+    s.paths = static_cast<size_t>(count(e, "n_paths", where));
+    s.runtime = figure(e, "runtime_s", where);
   }
 }
 
 void readCsv(Comparison& c, const fs::path& file, bool summaries)
 {
-  std::istringstream in(slurp(file));
+  std::istringstream in(readFile(file));
   std::string line;
   if (!std::getline(in, line) || line.rfind("strategy,x,y,z,height", 0) != 0)
-    throw InputError(file.string() + " does not start with 'strategy,x,y,z,height'",
-                     "give the compare.csv written by spira-cli compare");
+    throw InputError(file.string() + " does not start with 'strategy,x,y,z,height'", kCsvHint);
   size_t row = 1;
   while (std::getline(in, line)) {
     ++row;
@@ -95,13 +103,14 @@ void readCsv(Comparison& c, const fs::path& file, bool summaries)
     for (double& x : v) {
       if (!std::getline(fields, cell, ','))
         throw InputError(file.string() + " line " + std::to_string(row) + " has fewer than 5 fields",
-                         "give the compare.csv written by spira-cli compare");
-      try {
-        x = std::stod(cell);
-      } catch (const std::exception&) {
-        throw InputError(file.string() + " line " + std::to_string(row) + ": '" + cell + "' is not a number",
-                         "give the compare.csv written by spira-cli compare");
-      }
+                         kCsvHint);
+      std::string problem;
+      const std::optional<double> value = parseFiniteNumber(cell, problem);
+      if (!value)
+        throw InputError(
+            file.string() + " line " + std::to_string(row) + ": '" + clippedText(cell) + "' " + problem,
+            kCsvHint);
+      x = *value;
     }
     StrategyOutcome& s = outcomeFor(c, name);
     s.points.emplace_back(v[0], v[1], v[2]);
