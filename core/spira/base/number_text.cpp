@@ -3,6 +3,7 @@
 #include <charconv>
 #include <cmath>
 #include <iomanip>
+#include <limits>
 #include <sstream>
 
 namespace spira {
@@ -81,6 +82,23 @@ std::string clippedText(std::string_view text)
 {
   constexpr size_t kQuoteChars = 60;
   return text.size() <= kQuoteChars ? std::string(text) : std::string(text.substr(0, kQuoteChars)) + "...";
+}
+
+std::optional<double> parseMeshNumber(std::string_view text)
+{
+  std::string_view digits = text;
+  if (!digits.empty() && digits.front() == '+') digits.remove_prefix(1);  // from_chars rejects '+'
+  double value = 0.0;
+  const auto r = std::from_chars(digits.data(), digits.data() + digits.size(), value);
+  if (digits.empty() || r.ec == std::errc::invalid_argument || r.ptr != digits.data() + digits.size())
+    return std::nullopt;
+  if (r.ec == std::errc::result_out_of_range) {
+    const size_t e = digits.find_first_of("eE");
+    const bool tiny = e != std::string_view::npos && digits.find('-', e) != std::string_view::npos;
+    const double inf = std::numeric_limits<double>::infinity();
+    value = tiny ? 0.0 : (digits.front() == '-' ? -inf : inf);
+  }
+  return value;
 }
 
 }  // namespace spira

@@ -28,6 +28,11 @@ std::optional<double> parseFiniteNumber(std::string_view text, std::string& prob
 // The same for a whole number ("3.7", "1e3" are not one).
 std::optional<long long> parseWholeNumber(std::string_view text, std::string& problem);
 
+// A coordinate as mesh files (STL, PLY) write it: `text` whole, an optional leading '+'. A value
+// beyond a double reads as an infinity of its sign, so that the import reports it with the other
+// non-finite coordinates, and one below the smallest denormal as 0; nullopt when it is not a number.
+std::optional<double> parseMeshNumber(std::string_view text);
+
 // User text quoted in a message, clipped to about 60 characters with an ellipsis so that a huge
 // value is not echoed back.
 std::string clippedText(std::string_view text);

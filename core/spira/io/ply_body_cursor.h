@@ -12,6 +12,7 @@
 #include <string_view>
 #include <utility>
 
+#include "spira/base/number_text.h"
 #include "spira/io/ply_header.h"
 
 namespace spira::ply_detail {
@@ -128,20 +129,9 @@ class AsciiCursor {
   double real(PlyType)
   {
     const std::string_view t = token();
-    std::string_view digits = t;
-    if (!digits.empty() && digits.front() == '+') digits.remove_prefix(1);  // from_chars rejects '+'
-    double value = 0.0;
-    const auto r = std::from_chars(digits.data(), digits.data() + digits.size(), value);
-    if (r.ec == std::errc::invalid_argument || r.ptr != digits.data() + digits.size())
-      throw PlyBodyProblem{PlyBodyProblem::NotNumber, plyExcerpt(t)};
-    if (r.ec == std::errc::result_out_of_range) {
-      // Overflow becomes infinity so that the import reports it with the other non-finite values.
-      const size_t e = digits.find_first_of("eE");
-      const bool tiny = e != std::string_view::npos && digits.find('-', e) != std::string_view::npos;
-      const double inf = std::numeric_limits<double>::infinity();
-      value = tiny ? 0.0 : (digits.front() == '-' ? -inf : inf);
-    }
-    return value;
+    const std::optional<double> value = parseMeshNumber(t);
+    if (!value) throw PlyBodyProblem{PlyBodyProblem::NotNumber, plyExcerpt(t)};
+    return *value;
   }
 
   std::int64_t whole(PlyType)

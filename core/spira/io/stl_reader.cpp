@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "spira/base/error.h"
+#include "spira/base/number_text.h"
 #include "spira/io/mapped_file.h"
 
 static_assert(__BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__,
@@ -193,21 +194,9 @@ class AsciiStlParser {
   double number()
   {
     const std::string_view t = token();
-    std::string_view digits = t;
-    if (!digits.empty() && digits.front() == '+') digits.remove_prefix(1);  // from_chars rejects '+'
-    double value = 0.0;
-    const auto r = std::from_chars(digits.data(), digits.data() + digits.size(), value);
-    if (t.empty() || r.ec == std::errc::invalid_argument || r.ptr != digits.data() + digits.size())
-      fail("expected a number", t);
-    if (r.ec == std::errc::result_out_of_range) {
-      // Overflow becomes infinity so that the import reports it with the other non-finite values.
-      const bool negative = digits.front() == '-';
-      const bool tiny = digits.find_first_of("eE") != std::string_view::npos &&
-                        digits.find('-', digits.find_first_of("eE")) != std::string_view::npos;
-      const double inf = std::numeric_limits<double>::infinity();
-      value = tiny ? 0.0 : (negative ? -inf : inf);
-    }
-    return value;
+    const std::optional<double> value = parseMeshNumber(t);
+    if (!value) fail("expected a number", t);
+    return *value;
   }
 
   [[noreturn]] void fail(const std::string& expected, std::string_view found) const
