@@ -19,6 +19,7 @@ for t in "${targets[@]}"; do
   inputs=("$here/corpus/$t")
   [ -d "$here/regressions/$t" ] && inputs+=("$here/regressions/$t")
   [ "$t" = ply ] || [ "$t" = obj ] && inputs+=("$here/../tests/data/hostile/$t")
+  [ "$t" = step_front ] && inputs+=("$here/../tests/data/hostile/step")
   start=$(date +%s)
   (cd "$work/$t/findings" && "$bin" -runs="$runs" -rss_limit_mb=2048 -timeout=10 -max_len=65536 \
       -print_final_stats=1 "$work/$t/corpus" "${inputs[@]}") > "$work/$t/log" 2>&1

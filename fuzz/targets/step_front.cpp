@@ -9,10 +9,13 @@
 #include "../fuzz_support.h"
 #include "mesh_target.h"
 #include "spira/io/import_wire.h"
+#include "spira/io/step_tokens.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
 {
   if (size == 0) return 0;
+  spira::fuzz::refusalsAllowed(
+      [&] { spira::checkStepTokens(spira::fuzz::bytes(data, size), "fuzz.step", 64); });
   const size_t chunk = 1 + data[0] % 64;
   const char* stream = reinterpret_cast<const char*>(data + 1);
   const size_t length = size - 1;

@@ -34,6 +34,8 @@
 #include <thread>
 
 #include "spira/base/error.h"
+#include "spira/io/mapped_file.h"
+#include "spira/io/step_tokens.h"
 
 namespace spira::import_cad {
 namespace {
@@ -168,6 +170,7 @@ size_t declaredFaces(const STEPControl_Reader& reader)
 
 TopoDS_Shape readStep(const std::filesystem::path& file, Progress& progress, CadMesh& out, size_t& declared)
 {
+  checkStepTokens(MappedFile(file).bytes(), file.filename().string());
   std::lock_guard<std::mutex> lock(transferMutex());
   STEPControl_Reader reader;
   requestMillimetres();
