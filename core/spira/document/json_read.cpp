@@ -60,6 +60,56 @@ class LocatingParser : public nlohmann::detail::json_sax_dom_parser<json> {
   const std::string& hint_;
 };
 
+// The CBOR decoder descends one call per nesting level: deeper data is refused before it can
+// overflow the stack. Spira's own files nest a few levels.
+constexpr size_t kMaxCborDepth = 64;
+
+class BoundedCborParser : public nlohmann::detail::json_sax_dom_parser<json> {
+ public:
+  BoundedCborParser(json& result, const std::string& what, const std::string& hint)
+      : json_sax_dom_parser(result, true), what_(what), hint_(hint)
+  {
+  }
+
+  bool start_object(std::size_t n)
+  {
+    enter();
+    return json_sax_dom_parser::start_object(n);
+  }
+  bool end_object()
+  {
+    --depth_;
+    return json_sax_dom_parser::end_object();
+  }
+  bool start_array(std::size_t n)
+  {
+    enter();
+    return json_sax_dom_parser::start_array(n);
+  }
+  bool end_array()
+  {
+    --depth_;
+    return json_sax_dom_parser::end_array();
+  }
+
+  template <class Exception>
+  bool parse_error(std::size_t position, const std::string&, const Exception&)
+  {
+    throw InputError(what_ + ": the binary content is malformed at byte " + std::to_string(position), hint_);
+  }
+
+ private:
+  void enter()
+  {
+    if (++depth_ > kMaxCborDepth)
+      throw InputError(what_ + ": the content nests deeper than " + std::to_string(kMaxCborDepth) + " levels",
+                       hint_);
+  }
+  size_t depth_ = 0;
+  const std::string& what_;
+  const std::string& hint_;
+};
+
 [[noreturn]] void wrongType(const char* key, const char* expected, const json& found, const std::string& what,
                             const std::string& hint)
 {
@@ -81,6 +131,19 @@ json parse(const std::string& text, const std::string& what, const std::string& 
   json result;
   LocatingParser parser(result, text, what, hint);
   json::sax_parse(text, &parser);
+  return result;
+}
+
+json parseCbor(std::string_view bytes, const std::string& what, const std::string& hint)
+{
+  json result;
+  BoundedCborParser parser(result, what, hint);
+  try {
+    json::sax_parse(bytes.begin(), bytes.end(), &parser, json::input_format_t::cbor);
+  } catch (const json::exception&) {
+    // The decoder throws directly, not through parse_error, for a declared size beyond any memory.
+    throw InputError(what + ": the binary content declares a size it cannot hold", hint);
+  }
   return result;
 }
 

@@ -2,6 +2,7 @@
 
 #include <cstdint>
 #include <string>
+#include <string_view>
 
 #include <nlohmann/json.hpp>
 
@@ -14,6 +15,10 @@ namespace spira::json_read {
 // Parses `text`; a syntax error or a number beyond the range of a double is reported with its line
 // and column.
 nlohmann::json parse(const std::string& text, const std::string& what, const std::string& hint);
+
+// Parses CBOR (RFC 8949) bytes: malformed content is reported with its byte offset, data nested
+// deeper than 64 levels is refused, tags are refused.
+nlohmann::json parseCbor(std::string_view bytes, const std::string& what, const std::string& hint);
 
 // What a value is, for a message: "the string \"x\"", "the number 5", "an object", ...; quoted text
 // is clipped so that a huge value is not echoed back.

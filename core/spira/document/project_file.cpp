@@ -8,6 +8,7 @@
 #include "spira/base/error.h"
 #include "spira/base/version.h"
 #include "spira/document/json_codec.h"
+#include "spira/document/json_read.h"
 
 namespace spira {
 
@@ -114,12 +115,7 @@ DocumentState decodeProject(std::string_view bytes)
   const std::string_view payload = bytes.substr(kHeaderSize, static_cast<std::size_t>(size));
   if (crc32(payload) != static_cast<std::uint32_t>(getLe(bytes, kHeaderSize + payload.size(), 4)))
     throw InputError(std::string(kDamaged) + " (checksum mismatch)", kDamagedHint);
-  try {
-    const nlohmann::json j = nlohmann::json::from_cbor(payload.begin(), payload.end());
-    return fromProjectJson(j);
-  } catch (const nlohmann::json::exception& e) {
-    throw InputError(std::string("the project content is malformed: ") + e.what(), kDamagedHint);
-  }
+  return fromProjectJson(json_read::parseCbor(payload, "the project content", kDamagedHint));
 }
 
 void saveProject(const DocumentState& state, const std::filesystem::path& path)
