@@ -21,9 +21,13 @@ add_library(Spira::occt INTERFACE IMPORTED)
 set_target_properties(Spira::occt PROPERTIES INTERFACE_INCLUDE_DIRECTORIES "${OpenCASCADE_INCLUDE_DIR}"
   INTERFACE_LINK_LIBRARIES "TKernel;TKMath;TKBRep;TKG3d;TKGeomBase;TKGeomAlgo;TKTopAlgo;TKPrim;TKMesh;TKShHealing;TKXSBase;TKSTEP;TKSTEPBase;TKSTEPAttr;TKSTEP209;TKIGES;TKBO")
 
+# TinyXML (urdfdom's XML reader, a dependency of liburdfdom-dev) checks the joint tree before urdfdom
+# builds it (kinematics/urdf_parse.h).
+find_path(TINYXML_INCLUDE_DIR tinyxml.h REQUIRED)
+find_library(TINYXML_LIBRARY tinyxml REQUIRED)
 add_library(Spira::urdfdom INTERFACE IMPORTED)
-set_target_properties(Spira::urdfdom PROPERTIES INTERFACE_INCLUDE_DIRECTORIES "${urdfdom_INCLUDE_DIRS}"
-  INTERFACE_LINK_LIBRARIES "${urdfdom_LIBRARIES}")
+set_target_properties(Spira::urdfdom PROPERTIES INTERFACE_INCLUDE_DIRECTORIES "${urdfdom_INCLUDE_DIRS};${TINYXML_INCLUDE_DIR}"
+  INTERFACE_LINK_LIBRARIES "${urdfdom_LIBRARIES};${TINYXML_LIBRARY}")
 
 if(SPIRA_BUILD_GUI)
   find_package(Qt5 5.15 REQUIRED COMPONENTS Core Gui Widgets OpenGL Test Svg)

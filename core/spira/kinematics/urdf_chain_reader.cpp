@@ -7,6 +7,7 @@
 #include "spira/base/atomic_file.h"
 #include "spira/base/error.h"
 #include "spira/kinematics/kinematic_chain.h"
+#include "spira/kinematics/urdf_parse.h"
 
 namespace spira {
 
@@ -127,7 +128,7 @@ KinematicChain chainFromModel(const urdf::ModelInterface& model, const std::stri
 KinematicChain KinematicChain::fromUrdfString(const std::string& xml, const std::string& baseLink,
                                               const std::string& tipLink)
 {
-  const urdf::ModelInterfaceSharedPtr model = urdf::parseURDF(xml);
+  const urdf::ModelInterfaceSharedPtr model = parseUrdfTree(xml);
   if (!model)
     throw InputError("the robot description is not valid URDF (the URDF parser rejected it)",
                      "check the file with check_urdf; it must be plain URDF, not xacro");

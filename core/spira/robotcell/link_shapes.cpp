@@ -2,12 +2,15 @@
 
 #include <urdf_parser/urdf_parser.h>
 
+#include "spira/kinematics/urdf_parse.h"
+
 #include <cmath>
 #include <filesystem>
 
 #include "spira/base/atomic_file.h"
 #include "spira/base/error.h"
 #include "spira/base/units.h"
+#include "spira/kinematics/urdf_parse.h"
 #include "spira/robotcell/mesh_file.h"
 
 namespace spira {
@@ -126,7 +129,7 @@ bool visualMesh(const urdf::Link& link, const std::filesystem::path& dir, Triang
 RobotShapes readRobotShapes(const std::string& urdfPath, const std::string& baseLink,
                             const std::string& tipLink)
 {
-  const urdf::ModelInterfaceSharedPtr model = urdf::parseURDF(readFile(urdfPath));
+  const urdf::ModelInterfaceSharedPtr model = parseUrdfTree(readFile(urdfPath));
   if (!model)
     throw InputError("the robot description " + urdfPath + " does not parse as URDF",
                      "check it with check_urdf");

@@ -5,6 +5,7 @@
 #include "spira/base/atomic_file.h"
 #include "spira/base/error.h"
 #include "spira/base/units.h"
+#include "spira/kinematics/urdf_parse.h"
 #include "spira/path/tool_frame.h"
 
 namespace spira {
@@ -13,7 +14,7 @@ namespace {
 
 std::string rootLinkOf(const std::string& urdfPath)
 {
-  const urdf::ModelInterfaceSharedPtr model = urdf::parseURDF(readFile(urdfPath));
+  const urdf::ModelInterfaceSharedPtr model = parseUrdfTree(readFile(urdfPath));
   if (!model || !model->getRoot())
     throw InputError("the robot description " + urdfPath + " does not parse as URDF",
                      "check the file with check_urdf, or choose another cell");
