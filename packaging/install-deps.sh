@@ -12,7 +12,7 @@ $SUDO apt-get install -y -qq --no-install-recommends \
   libvtk9-dev libvtk9-qt-dev \
   libocct-foundation-dev libocct-modeling-data-dev libocct-modeling-algorithms-dev libocct-data-exchange-dev \
   libcgal-dev libgmp-dev libmpfr-dev libboost-dev \
-  libeigen3-dev libassimp-dev liburdfdom-dev liburdfdom-headers-dev \
+  libeigen3-dev libassimp-dev liburdfdom-dev liburdfdom-headers-dev libtinyxml-dev \
   libsuitesparse-dev libopenblas0-pthread libtbb-dev nlohmann-json3-dev \
   libgtest-dev libgmock-dev \
   xvfb xauth libgl1-mesa-dri mesa-utils \

@@ -1,5 +1,5 @@
 // urdfdom builds the links of a joint loop into a cycle it never frees before refusing the file
-// (found by the URDF fuzz target under LeakSanitizer): parseUrdfTree refuses such files first.
+// (found by the URDF fuzz target under LeakSanitizer): parseUrdfModel refuses such files first.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -28,7 +28,8 @@ std::string joint(const std::string& name, const std::string& parent, const std:
 std::string refusal(const std::string& xml)
 {
   try {
-    return parseUrdfTree(xml) ? "parsed" : "rejected by urdfdom";
+    parseUrdfModel(xml, "r.urdf");
+    return "parsed";
   } catch (const InputError& e) {
     return e.what();
   }
@@ -38,7 +39,8 @@ TEST(UrdfTree, ATreeParses)
 {
   EXPECT_EQ(refusal(robot(joint("j1", "a", "b") + joint("j2", "b", "c"))), "parsed");
   EXPECT_EQ(refusal(robot(joint("j1", "a", "b") + joint("j2", "a", "c"))), "parsed");
-  const auto model = parseUrdfTree(readFile(sourceDir() / "resources/robots/kuka_kr16_2/robot.urdf"));
+  const auto model =
+      parseUrdfModel(readFile(sourceDir() / "resources/robots/kuka_kr16_2/robot.urdf"), "kuka");
   ASSERT_TRUE(model);
   EXPECT_EQ(model->getRoot()->name, "base_link");
 }
@@ -46,23 +48,29 @@ TEST(UrdfTree, ATreeParses)
 TEST(UrdfTree, LoopsAreRefusedNamingALinkAndItsJoint)
 {
   EXPECT_EQ(refusal(robot(joint("j1", "a", "b") + joint("j2", "b", "a"))),
-            "the robot description's joints form a loop through link 'a' (joint 'j2')");
+            "r.urdf: the joints form a loop through link 'a' (joint 'j2')");
   EXPECT_EQ(refusal(robot(joint("j1", "a", "b") + joint("j2", "b", "c") + joint("j3", "c", "a"))),
-            "the robot description's joints form a loop through link 'a' (joint 'j3')");
+            "r.urdf: the joints form a loop through link 'a' (joint 'j3')");
   EXPECT_EQ(refusal(robot(joint("self", "b", "b"))),
-            "the robot description's joints form a loop through link 'b' (joint 'self')");
+            "r.urdf: the joints form a loop through link 'b' (joint 'self')");
 }
 
 TEST(UrdfTree, ALinkWithTwoParentsIsRefused)
 {
   EXPECT_EQ(refusal(robot(joint("j1", "a", "c") + joint("j2", "b", "c"))),
-            "the robot description's link 'c' is the child of two joints ('j1' and 'j2')");
+            "r.urdf: link 'c' is the child of two joints ('j1' and 'j2')");
 }
 
-TEST(UrdfTree, TextThatIsNotURDFIsLeftToUrdfdom)
+// urdfdom's own first error ends the message; it prints nothing itself.
+TEST(UrdfTree, UrdfdomsFirstErrorIsInTheMessage)
 {
-  EXPECT_EQ(refusal("<robot"), "rejected by urdfdom");
-  EXPECT_EQ(refusal("<plant/>"), "rejected by urdfdom");
+  ::testing::internal::CaptureStderr();
+  EXPECT_EQ(refusal("<plant/>"),
+            "r.urdf is not valid URDF: Could not find the 'robot' element in the xml file");
+  EXPECT_EQ(refusal(robot(joint("j1", "a", "z"))),
+            "r.urdf is not valid URDF: Failed to build tree: child link [z] of joint [j1] not found");
+  EXPECT_EQ(refusal("<robot"), "r.urdf is not valid URDF: Failed to read Element name");
+  EXPECT_EQ(::testing::internal::GetCapturedStderr(), "");
 }
 
 }  // namespace

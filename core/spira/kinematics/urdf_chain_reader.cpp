@@ -128,11 +128,7 @@ KinematicChain chainFromModel(const urdf::ModelInterface& model, const std::stri
 KinematicChain KinematicChain::fromUrdfString(const std::string& xml, const std::string& baseLink,
                                               const std::string& tipLink)
 {
-  const urdf::ModelInterfaceSharedPtr model = parseUrdfTree(xml);
-  if (!model)
-    throw InputError("the robot description is not valid URDF (the URDF parser rejected it)",
-                     "check the file with check_urdf; it must be plain URDF, not xacro");
-  return chainFromModel(*model, baseLink, tipLink);
+  return chainFromModel(*parseUrdfModel(xml, "the robot description"), baseLink, tipLink);
 }
 
 KinematicChain KinematicChain::fromUrdfFile(const std::string& path, const std::string& baseLink,

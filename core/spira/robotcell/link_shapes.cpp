@@ -129,10 +129,8 @@ bool visualMesh(const urdf::Link& link, const std::filesystem::path& dir, Triang
 RobotShapes readRobotShapes(const std::string& urdfPath, const std::string& baseLink,
                             const std::string& tipLink)
 {
-  const urdf::ModelInterfaceSharedPtr model = parseUrdfTree(readFile(urdfPath));
-  if (!model)
-    throw InputError("the robot description " + urdfPath + " does not parse as URDF",
-                     "check it with check_urdf");
+  const urdf::ModelInterfaceSharedPtr model =
+      parseUrdfModel(readFile(urdfPath), "the robot description " + urdfPath);
   const std::filesystem::path dir = std::filesystem::path(urdfPath).parent_path();
   const KinematicChain arm = KinematicChain::fromUrdfFile(urdfPath, baseLink, tipLink);
   RobotShapes shapes;

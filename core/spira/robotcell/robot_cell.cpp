@@ -14,11 +14,7 @@ namespace {
 
 std::string rootLinkOf(const std::string& urdfPath)
 {
-  const urdf::ModelInterfaceSharedPtr model = parseUrdfTree(readFile(urdfPath));
-  if (!model || !model->getRoot())
-    throw InputError("the robot description " + urdfPath + " does not parse as URDF",
-                     "check the file with check_urdf, or choose another cell");
-  return model->getRoot()->name;
+  return parseUrdfModel(readFile(urdfPath), "the robot description " + urdfPath)->getRoot()->name;
 }
 
 // T_root_link: the fixed joints from the URDF root down to `link` (none of them may move).
