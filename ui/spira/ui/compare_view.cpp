@@ -48,6 +48,14 @@ QString fromStd(const std::string& s)
   return QString::fromStdString(s);
 }
 
+// A refusal and what to do about it, as rich text: the hint on its own line.
+QString withHint(const QString& message, const QString& hint)
+{
+  return hint.isEmpty()
+             ? message.toHtmlEscaped()
+             : message.toHtmlEscaped() + "<br>" + QObject::tr("To fix it: %1").arg(hint.toHtmlEscaped());
+}
+
 }  // namespace
 
 CompareView::CompareView(Document& doc, const PluginRegistry& registry, QWidget* parent)
@@ -204,10 +212,10 @@ void CompareView::finishRun(const TaskOutcome& outcome, const std::shared_ptr<Co
   open_->setEnabled(true);
   cancel_->setVisible(false);
   if (!outcome.succeeded()) {
-    status_->setText(outcome.status == TaskOutcome::Status::Cancelled
-                         ? tr("Comparison cancelled.")
-                         : tr("<b>The comparison failed:</b> %1 %2")
-                               .arg(outcome.message.toHtmlEscaped(), outcome.hint.toHtmlEscaped()));
+    status_->setText(
+        outcome.status == TaskOutcome::Status::Cancelled
+            ? tr("Comparison cancelled.")
+            : tr("<b>The comparison failed:</b> %1").arg(withHint(outcome.message, outcome.hint)));
     emit comparisonReady(false);
     return;
   }
@@ -220,8 +228,8 @@ bool CompareView::openFile(const QString& path)
   try {
     setComparison(readComparison(path.toStdString()));
   } catch (const Error& e) {
-    status_->setText(tr("<b>Cannot open the comparison:</b> %1 %2")
-                         .arg(fromStd(e.what()).toHtmlEscaped(), fromStd(e.hint()).toHtmlEscaped()));
+    status_->setText(
+        tr("<b>Cannot open the comparison:</b> %1").arg(withHint(fromStd(e.what()), fromStd(e.hint()))));
     return false;
   }
   return true;
