@@ -18,6 +18,7 @@
 
 #include "spira/base/version.h"
 #include "spira/document/document.h"
+#include "spira/io/isolated_import.h"
 #include "spira/ui/application.h"
 #include "spira/ui/comfort_features.h"
 #include "spira/ui/main_window.h"
@@ -157,6 +158,9 @@ int main(int argc, char** argv)
   spira::ui::prepareApplication();
   QApplication app(argc, argv);
   spira::ui::configureApplication(app);
+  // Loads the CAD and link-mesh readers while the window comes up, so the first import and the
+  // first cell do not wait for them.
+  spira::prestartImportHelper();
 
   if (!cmd.screenshot.empty()) {
     QTextStream err(stderr);

@@ -1,7 +1,10 @@
-// spira-import: the helper process that runs a third-party importer (OpenCASCADE) for spira and
-// spira-cli, so that a crash in it cannot take them down. See core/spira/io/isolated_import.h.
-// It registers only the importers that run isolated: every library it does not load is start-up
-// time saved on each import.
+// spira-import: the helper process that runs a third-party importer (OpenCASCADE for CAD parts,
+// Assimp for robot link meshes) for spira and spira-cli, so that a crash in it cannot take them
+// down. See core/spira/io/isolated_import.h. It registers only the importers that run isolated:
+// every library it does not load is start-up time saved.
+#include <memory>
+
+#include "link_mesh_importer.h"
 #include "spira/io/isolated_import.h"
 #include "spira/plugin/plugin_registry.h"
 
@@ -21,5 +24,6 @@ int main(int argc, char** argv)
 {
   spira::PluginRegistry registry;
   spira_register_import_cad(registry);
+  registry.add(std::make_unique<spira::LinkMeshImporter>());
   return spira::importHelperMain(argc, argv, registry);
 }

@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -83,6 +84,31 @@ TEST(LinkMesh, ColladaUnitIsHonouredAndUpAxisIgnoredAsRvizDoes)
   EXPECT_NEAR(scaled.max.x(), 2.0 * metres.max.x(), 1e-6);
   EXPECT_NEAR(scaled.min.z(), 0.5 * metres.min.z(), 1e-6);
   EXPECT_NEAR(scaled.max.y(), metres.max.y(), 1e-6);
+}
+
+// COLLADA is parsed by Assimp in the spira-import helper, never in this process: the whole KUKA
+// package is read without libassimp being loaded here, and a reader stopped by the import limits
+// comes back as an InputError naming the file, with a hint about the robot package.
+TEST(LinkMesh, ColladaIsReadInTheImportHelper)
+{
+  const RobotShapes s = readRobotShapes((kuka() / "robot.urdf").string(), "base_link", "tool0");
+  ASSERT_FALSE(s.links.empty());
+  EXPECT_TRUE(s.links.front().displayIsVisual);
+  const std::string maps = slurp("/proc/self/maps");
+  ASSERT_NE(maps.find("libc"), std::string::npos);
+  EXPECT_EQ(maps.find("libassimp"), std::string::npos) << "Assimp is loaded in the planning process";
+
+  ::setenv("SPIRA_IMPORT_TIMEOUT_S", "0.001", 1);
+  try {
+    readLinkMesh(kuka() / "meshes" / "visual" / "link_2.dae", Vec3::Ones());
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("reading 'link_2.dae' took longer than the import's time limit"),
+              std::string::npos)
+        << e.what();
+    EXPECT_NE(e.hint().find("robot's support package"), std::string::npos) << e.hint();
+  }
+  ::unsetenv("SPIRA_IMPORT_TIMEOUT_S");
 }
 
 TEST(LinkMesh, CorruptOrMissingFileThrowsIoError)

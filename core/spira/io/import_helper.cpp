@@ -1,16 +1,28 @@
 // spira-import's body: runs one importer with limits on its own memory and processor time and
-// streams the result to the parent (see import_wire.h).
+// streams the result to the parent (see import_wire.h), or serves imports as forked children of a
+// process that has loaded the libraries once (see import_process.h).
+#include <poll.h>
 #include <signal.h>
+// glibc 2.36's header lacks the C++ linkage guards.
+extern "C" {
+#include <sys/pidfd.h>
+}
 #include <sys/prctl.h>
 #include <sys/resource.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <cmath>
 #include <iostream>
 #include <new>
 #include <nlohmann/json.hpp>
+#include <optional>
+#include <string_view>
 
 #include "spira/base/error.h"
+#include "spira/io/import_process.h"
+#include "spira/io/import_server_protocol.h"
 #include "spira/io/import_wire.h"
 #include "spira/io/isolated_import.h"
 
@@ -45,20 +57,20 @@ void limit(int resource, rlim_t value)
   ::setrlimit(resource, &r);
 }
 
-int runImporter(char** argv, const PluginRegistry& registry)
+int runImporter(const import_process::Request& r, const PluginRegistry& registry)
 {
 #ifndef __SANITIZE_ADDRESS__  // AddressSanitizer's shadow memory alone is terabytes of address space
-  limit(RLIMIT_AS, std::stoull(argv[4]));
+  limit(RLIMIT_AS, r.memoryBytes);
 #endif
-  limit(RLIMIT_CPU, std::stoull(argv[5]));
+  limit(RLIMIT_CPU, static_cast<rlim_t>(r.cpuSeconds));
   limit(RLIMIT_CORE, 0);
   wire::Writer out(kResultFd);
   out.header();
   try {
-    const ImporterPlugin& importer = registry.importer(argv[1]);
-    const ParamSet params = ParamSet::fromJson(nlohmann::json::parse(argv[3]), &importer.schema());
+    const ImporterPlugin& importer = registry.importer(r.importer);
+    const ParamSet params = ParamSet::fromJson(nlohmann::json::parse(r.params), &importer.schema());
     WireProgress progress(out);
-    out.mesh(importer.read(argv[2], params, progress));
+    out.mesh(importer.read(r.file, params, progress));
   } catch (const InputError& e) {
     out.error(wire::ErrorKind::Input, e.what(), e.hint());
   } catch (const IoError& e) {
@@ -70,16 +82,106 @@ int runImporter(char** argv, const PluginRegistry& registry)
   } catch (const std::bad_alloc&) {
     out.error(wire::ErrorKind::Memory, {}, {});
   } catch (const std::exception& e) {
-    out.error(wire::ErrorKind::Internal, std::string("importer '") + argv[1] + "' failed: " + e.what(),
+    out.error(wire::ErrorKind::Internal, "importer '" + r.importer + "' failed: " + e.what(),
               "please report this with the file");
   }
   return 0;
+}
+
+// Runs the importer and ends the process: the result is written, and the libraries' exit handlers
+// can hang once memory ran out (OpenBLAS joins a thread stuck on a failed mmap) and only cost time.
+[[noreturn]] void runAndExit(const import_process::Request& r, const PluginRegistry& registry)
+{
+  int status = 1;  // the parent is gone or the request is not Spira's: nobody left to tell
+  try {
+    status = runImporter(r, registry);
+  } catch (const std::exception&) {
+  }
+  ::_exit(status);
+}
+
+std::optional<import_process::Request> requestOf(const nlohmann::json& body)
+{
+  const auto text = [&](const char* key) { return body.contains(key) && body[key].is_string(); };
+  const auto count = [&](const char* key) { return body.contains(key) && body[key].is_number_unsigned(); };
+  if (!text("importer") || !text("file") || !text("params") || !count("memory") || !count("cpu"))
+    return std::nullopt;
+  return import_process::Request{body["importer"], body["file"], body["params"], body["memory"].get<size_t>(),
+                                 body["cpu"].get<long>()};
+}
+
+// The forked child: the pipes become its descriptors 1 to 3, as for a spawned helper.
+[[noreturn]] void serveChild(const import_process::Request& r, int result, int log, pid_t server,
+                             const PluginRegistry& registry)
+{
+  ::prctl(PR_SET_PDEATHSIG, SIGKILL);
+  if (::getppid() != server) ::_exit(1);
+  if (::dup2(log, 1) < 0 || ::dup2(log, 2) < 0 || ::dup2(result, kResultFd) < 0) ::_exit(1);
+  ::close(result);
+  ::close(log);
+  runAndExit(r, registry);
+}
+
+// Waits for the child to end, or for the client to go away (then the child is killed first).
+std::pair<int, size_t> awaitChild(int socket, pid_t pid, int pidfd)
+{
+  for (;;) {
+    pollfd fds[2] = {{pidfd, POLLIN, 0}, {socket, 0, 0}};
+    if (::poll(fds, 2, -1) < 0 && errno != EINTR) break;
+    if (fds[0].revents) break;
+    if (fds[1].revents & (POLLHUP | POLLERR)) {
+      ::kill(pid, SIGKILL);
+      break;
+    }
+  }
+  int status = 0;
+  struct rusage usage {};
+  while (::wait4(pid, &status, 0, &usage) < 0 && errno == EINTR) {
+  }
+  return {status, static_cast<size_t>(usage.ru_maxrss) * 1024};
+}
+
+// One request at a time (the client holds the server while its import runs); ends when the client
+// closes its socket.
+[[noreturn]] void serve(int socket, const PluginRegistry& registry)
+{
+  const pid_t self = ::getpid();
+  for (;;) {
+    std::optional<import_server::Message> m = import_server::receive(socket);
+    if (!m) ::_exit(0);
+    const std::optional<import_process::Request> r = requestOf(m->body);
+    const pid_t pid = r && m->fds.size() == 2 ? ::fork() : -1;
+    if (pid == 0) {
+      ::close(socket);
+      serveChild(*r, m->fds[0], m->fds[1], self, registry);
+    }
+    for (int fd : m->fds) ::close(fd);
+    const int pidfd = pid > 0 ? ::pidfd_open(pid, 0) : -1;
+    if (pidfd < 0) {
+      if (pid > 0) {
+        ::kill(pid, SIGKILL);
+        ::waitpid(pid, nullptr, 0);
+      }
+      import_server::send(socket, {{"error", "no importer started"}});
+      continue;
+    }
+    const bool told = import_server::send(socket, {{"pid", pid}}, {pidfd});
+    const auto [status, peak] = told ? awaitChild(socket, pid, pidfd) : std::pair<int, size_t>{0, 0};
+    ::close(pidfd);
+    if (!told) ::_exit(0);  // the child dies with this process
+    import_server::send(socket, {{"status", status}, {"maxrss", peak}});
+  }
 }
 
 }  // namespace
 
 int importHelperMain(int argc, char** argv, const PluginRegistry& registry)
 {
+  if (argc == 2 && std::string_view(argv[1]) == "--serve") {
+    const int socket = import_server::highDescriptor(kResultFd);
+    if (socket < 0) ::_exit(1);
+    serve(socket, registry);
+  }
   // Dies with the parent: an orphaned parser must not keep running.
   ::prctl(PR_SET_PDEATHSIG, SIGKILL);
   if (::getppid() == 1) return 1;
@@ -88,14 +190,11 @@ int importHelperMain(int argc, char** argv, const PluginRegistry& registry)
                  "not by hand)\n";
     return 2;
   }
-  int status = 1;  // the parent is gone or the arguments are not Spira's: nobody left to tell
   try {
-    status = runImporter(argv, registry);
+    runAndExit({argv[1], argv[2], argv[3], std::stoull(argv[4]), std::stol(argv[5])}, registry);
   } catch (const std::exception&) {
   }
-  // The result is written: skip the libraries' exit handlers, which can hang once memory ran out
-  // (OpenBLAS joins a thread stuck on a failed mmap) and only cost time.
-  ::_exit(status);
+  ::_exit(1);
 }
 
 }  // namespace spira

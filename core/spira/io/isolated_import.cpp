@@ -1,10 +1,7 @@
 #include "spira/io/isolated_import.h"
 
-#include <fcntl.h>
 #include <poll.h>
 #include <signal.h>
-#include <spawn.h>
-#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -19,9 +16,8 @@
 #include <thread>
 
 #include "spira/base/error.h"
+#include "spira/io/import_process.h"
 #include "spira/io/import_wire.h"
-
-extern char** environ;
 
 namespace fs = std::filesystem;
 
@@ -43,110 +39,6 @@ double envNumber(const char* name, double fallback)
         std::string("the environment variable ") + name + "='" + text + "' is not a positive number",
         std::string("set ") + name + " to a positive number or unset it");
   return v;
-}
-
-// A descriptor at 10 or above, close-on-exec: the child's 1, 2 and 3 are set from them by
-// dup2, which must not overwrite one that is still to be copied.
-int highFd(int fd)
-{
-  const int high = ::fcntl(fd, F_DUPFD_CLOEXEC, 10);
-  ::close(fd);
-  if (high < 0) throw IoError("cannot start the import helper: out of file descriptors", "close other files");
-  return high;
-}
-
-struct Pipe {
-  int read = -1, write = -1;
-  Pipe()
-  {
-    int fds[2];
-    if (::pipe2(fds, O_CLOEXEC) != 0)
-      throw IoError("cannot start the import helper: no pipe", "close other programs and try again");
-    read = highFd(fds[0]);
-    write = highFd(fds[1]);
-  }
-  ~Pipe()
-  {
-    closeRead();
-    closeWrite();
-  }
-  void closeRead()
-  {
-    if (read >= 0) ::close(read);
-    read = -1;
-  }
-  void closeWrite()
-  {
-    if (write >= 0) ::close(write);
-    write = -1;
-  }
-};
-
-// Owns the running helper: whatever ends the parent's wait (an error, a cancel, a timeout)
-// kills and reaps it.
-class Child {
- public:
-  explicit Child(pid_t pid) : pid_(pid) {}
-  ~Child()
-  {
-    if (pid_ > 0) {
-      ::kill(pid_, SIGKILL);
-      wait();
-    }
-  }
-  // Resident memory now (bytes), 0 once unknown. Watched as well as the helper's own address-space
-  // limit, which builds with AddressSanitizer cannot set.
-  size_t residentBytes() const
-  {
-    std::ifstream statm("/proc/" + std::to_string(pid_) + "/statm");
-    size_t pages = 0, resident = 0;
-    if (!(statm >> pages >> resident)) return 0;
-    return resident * static_cast<size_t>(::sysconf(_SC_PAGE_SIZE));
-  }
-  // The exit status and peak resident memory (bytes).
-  std::pair<int, size_t> wait()
-  {
-    int status = 0;
-    struct rusage usage {};
-    while (::wait4(pid_, &status, 0, &usage) < 0 && errno == EINTR) {
-    }
-    pid_ = -1;
-    return {status, static_cast<size_t>(usage.ru_maxrss) * 1024};
-  }
-
- private:
-  pid_t pid_;
-};
-
-pid_t spawnHelper(const std::vector<std::string>& args, const Pipe& result, const Pipe& log)
-{
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addopen(&actions, 0, "/dev/null", O_RDONLY, 0);
-  posix_spawn_file_actions_adddup2(&actions, log.write, 1);
-  posix_spawn_file_actions_adddup2(&actions, log.write, 2);
-  posix_spawn_file_actions_adddup2(&actions, result.write, 3);
-  posix_spawnattr_t attr;
-  posix_spawnattr_init(&attr);
-  sigset_t none, defaults;
-  sigemptyset(&none);
-  sigemptyset(&defaults);
-  for (int s : {SIGPIPE, SIGINT, SIGTERM, SIGHUP, SIGXCPU, SIGSEGV, SIGBUS, SIGABRT, SIGFPE, SIGILL})
-    sigaddset(&defaults, s);
-  posix_spawnattr_setsigmask(&attr, &none);
-  posix_spawnattr_setsigdefault(&attr, &defaults);
-  posix_spawnattr_setflags(&attr, POSIX_SPAWN_SETSIGMASK | POSIX_SPAWN_SETSIGDEF);
-  std::vector<char*> argv;
-  for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
-  argv.push_back(nullptr);
-  pid_t pid = 0;
-  const int rc = ::posix_spawn(&pid, args[0].c_str(), &actions, &attr, argv.data(), environ);
-  posix_spawn_file_actions_destroy(&actions);
-  posix_spawnattr_destroy(&attr);
-  if (rc != 0)
-    throw IoError("cannot start the import helper '" + args[0] + "': " + std::strerror(rc),
-                  "reinstall Spira: spira-import must sit next to spira-cli");
-  return pid;
 }
 
 std::string formatName(const fs::path& file)
@@ -194,7 +86,15 @@ std::vector<std::string> logLines(const std::string& log)
   return lines;
 }
 
-[[noreturn]] void rethrow(const wire::RemoteError& e, const std::string& source, const ImportLimits& limits)
+// What the user can do about a file the helper could not read.
+std::string reexportHint(const std::string& importerId)
+{
+  return importerId == "import.link_mesh" ? "re-export it as STL or COLLADA from the robot's support package"
+                                          : "re-export it from the CAD program";
+}
+
+[[noreturn]] void rethrow(const wire::RemoteError& e, const std::string& source, const ImportLimits& limits,
+                          const std::string& reexport)
 {
   switch (e.kind) {
     case wire::ErrorKind::Input:
@@ -206,8 +106,8 @@ std::vector<std::string> logLines(const std::string& log)
     case wire::ErrorKind::Memory:
       throw InputError("reading '" + source + "' needed more than the import's memory limit of " +
                            megabytes(limits.memoryBytes),
-                       "the file is probably damaged; re-export it from the CAD program, or raise "
-                       "SPIRA_IMPORT_MEMORY_MB if the part really is that large");
+                       "the file is probably damaged; " + reexport +
+                           ", or raise SPIRA_IMPORT_MEMORY_MB if it really is that large");
     case wire::ErrorKind::Internal:
       break;
   }
@@ -220,18 +120,18 @@ std::string signalName(int sig)
   return abbrev ? std::string(", SIG") + abbrev : std::string();
 }
 
-InputError timeLimit(const std::string& source, double seconds, const char* kind)
+InputError timeLimit(const std::string& source, double seconds, const char* kind, const std::string& reexport)
 {
   std::ostringstream limit;
   limit << seconds;
   return InputError("reading '" + source + "' took longer than the import's " + kind + " limit of " +
                         limit.str() + " s and was stopped",
-                    "the file is probably damaged; re-export it from the CAD program, or raise "
-                    "SPIRA_IMPORT_TIMEOUT_S if the part really is that large");
+                    "the file is probably damaged; " + reexport +
+                        ", or raise SPIRA_IMPORT_TIMEOUT_S if it really is that large");
 }
 
 InputError stoppedWithoutResult(const std::string& what, const std::string& source, int status,
-                                const std::vector<std::string>& lines)
+                                const std::vector<std::string>& lines, const std::string& hint)
 {
   std::string cause = WIFSIGNALED(status)
                           ? "crashed on '" + source + "' (signal " + std::to_string(WTERMSIG(status)) +
@@ -240,7 +140,15 @@ InputError stoppedWithoutResult(const std::string& what, const std::string& sour
                                 std::to_string(WEXITSTATUS(status)) + ")";
   cause += ": the file is damaged or uses entities Spira cannot read";
   if (!lines.empty()) cause += "; the reader said: " + lines.front();
-  return InputError(what + cause, "re-export the part from the CAD program; for STEP choose AP214 or AP242");
+  return InputError(what + cause, hint);
+}
+
+// The helper may have been started from another working directory.
+fs::path absolutePath(const fs::path& file)
+{
+  std::error_code ec;
+  const fs::path a = fs::absolute(file, ec);
+  return ec ? file : a;
 }
 
 }  // namespace
@@ -254,6 +162,11 @@ ImportLimits ImportLimits::fromEnvironment()
   l.memoryBytes = static_cast<size_t>(envNumber("SPIRA_IMPORT_MEMORY_MB", fallbackMb) * 1024 * 1024);
   l.wallSeconds = envNumber("SPIRA_IMPORT_TIMEOUT_S", 120.0);
   return l;
+}
+
+void prestartImportHelper()
+{
+  import_process::prestartServer();
 }
 
 fs::path importHelperPath()
@@ -274,15 +187,22 @@ fs::path importHelperPath()
 ImportedMesh readIsolated(const ImporterPlugin& importer, const fs::path& file, const ParamSet& params,
                           Progress& progress)
 {
+  return readIsolated(importer.id(), file, params, progress);
+}
+
+ImportedMesh readIsolated(const std::string& importerId, const fs::path& file, const ParamSet& params,
+                          Progress& progress)
+{
   progress.checkCancel();
   const ImportLimits limits = ImportLimits::fromEnvironment();
   const std::string source = file.filename().string();
+  const std::string reexport = reexportHint(importerId);
   const auto cpuSeconds =
       static_cast<long>(limits.wallSeconds * std::max(1u, std::thread::hardware_concurrency())) + 10;
-  Pipe result, log;
-  Child child(spawnHelper({importHelperPath().string(), importer.id(), file.string(), params.toJson().dump(),
-                           std::to_string(limits.memoryBytes), std::to_string(cpuSeconds)},
-                          result, log));
+  import_process::Pipe result, log;
+  const std::unique_ptr<import_process::Helper> child = import_process::start(
+      {importerId, absolutePath(file).string(), params.toJson().dump(), limits.memoryBytes, cpuSeconds},
+      result, log);
   result.closeWrite();
   log.closeWrite();
 
@@ -295,13 +215,13 @@ ImportedMesh readIsolated(const ImporterPlugin& importer, const fs::path& file, 
     pollfd fds[2] = {{result.read, POLLIN, 0}, {log.read, POLLIN, 0}};
     const int ready = ::poll(fds, 2, static_cast<int>(kPollSeconds * 1000));
     if (ready < 0 && errno != EINTR) throw IoError("waiting for the import helper failed", "try again");
-    if (progress.cancelled()) throw Cancelled();  // ~Child kills the helper
+    if (progress.cancelled()) throw Cancelled();  // ~Helper kills the helper
     const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    if (elapsed > limits.wallSeconds) throw timeLimit(source, limits.wallSeconds, "time");
+    if (elapsed > limits.wallSeconds) throw timeLimit(source, limits.wallSeconds, "time", reexport);
     if (elapsed >= nextMemoryCheck) {
       nextMemoryCheck = elapsed + kPollSeconds;
-      if (child.residentBytes() > limits.memoryBytes)
-        rethrow({wire::ErrorKind::Memory, {}, {}}, source, limits);
+      if (child->residentBytes() > limits.memoryBytes)
+        rethrow({wire::ErrorKind::Memory, {}, {}}, source, limits, reexport);
     }
     for (int i = 0; i < 2; ++i) {
       if (fds[i].fd < 0 || !(fds[i].revents & (POLLIN | POLLHUP | POLLERR))) continue;
@@ -317,16 +237,21 @@ ImportedMesh readIsolated(const ImporterPlugin& importer, const fs::path& file, 
         logText.append(buffer.data(), std::min(static_cast<size_t>(n), kMaxLogBytes - logText.size()));
     }
   }
-  const auto [status, peakBytes] = child.wait();
+  const auto [status, peakBytes] = child->wait();
   const std::string what = "the " + formatName(file) + " reader ";
   const std::vector<std::string> lines = logLines(logText);
   if (WIFSIGNALED(status) || !reader.complete()) {
-    if (peakBytes >= limits.memoryBytes / 4 * 3) rethrow({wire::ErrorKind::Memory, {}, {}}, source, limits);
+    if (peakBytes >= limits.memoryBytes / 4 * 3)
+      rethrow({wire::ErrorKind::Memory, {}, {}}, source, limits, reexport);
     if (WIFSIGNALED(status) && WTERMSIG(status) == SIGXCPU)
-      throw timeLimit(source, cpuSeconds, "processor time");
-    throw stoppedWithoutResult(what, source, status, lines);
+      throw timeLimit(source, cpuSeconds, "processor time", reexport);
+    throw stoppedWithoutResult(
+        what, source, status, lines,
+        importerId == "import.link_mesh"
+            ? reexport
+            : "re-export the part from the CAD program; for STEP choose AP214 or AP242");
   }
-  if (reader.error()) rethrow(*reader.error(), source, limits);
+  if (reader.error()) rethrow(*reader.error(), source, limits, reexport);
   ImportedMesh mesh = std::move(*reader.mesh());
   for (size_t i = 0; i < std::min(lines.size(), kMaxLogWarnings); ++i)
     mesh.warnings.push_back(what + "said: " + lines[i]);

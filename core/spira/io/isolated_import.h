@@ -23,14 +23,22 @@ struct ImportLimits {
 // helper's own messages come back as warnings. Cancelling `progress` kills the helper.
 ImportedMesh readIsolated(const ImporterPlugin& importer, const std::filesystem::path& file,
                           const ParamSet& params, Progress& progress);
+// The same for an importer only the helper has (robot link meshes through Assimp).
+ImportedMesh readIsolated(const std::string& importerId, const std::filesystem::path& file,
+                          const ParamSet& params, Progress& progress);
+
+// Starts the helper's warm server in the background, so that the first import of a session does
+// not wait for it to load OpenCASCADE (see import_process.h). Imports start it anyway.
+void prestartImportHelper();
 
 // The helper: next to the running executable, else the build tree's one; throws IoError when
 // neither exists.
 std::filesystem::path importHelperPath();
 
 // spira-import's main: `spira-import IMPORTER_ID FILE PARAMS_JSON MEMORY_BYTES CPU_SECONDS`,
-// the result on file descriptor 3, its messages (and OpenCASCADE's) on standard error. Once it has
-// run the importer it ends the process itself (_exit) instead of returning.
+// the result on file descriptor 3, its messages (and OpenCASCADE's) on standard error; or
+// `spira-import --serve`, the warm server, with its socket on file descriptor 3. It ends the
+// process itself (_exit) instead of returning.
 int importHelperMain(int argc, char** argv, const PluginRegistry& registry);
 
 }  // namespace spira

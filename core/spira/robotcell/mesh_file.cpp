@@ -1,17 +1,12 @@
 #include "spira/robotcell/mesh_file.h"
 
-#include <assimp/config.h>
-#include <assimp/postprocess.h>
-#include <assimp/scene.h>
-#include <assimp/Importer.hpp>
-
 #include <cctype>
 #include <string>
 #include <utility>
 
 #include "spira/base/error.h"
 #include "spira/base/progress.h"
-#include "spira/io/assimp_scene.h"
+#include "spira/io/isolated_import.h"
 #include "spira/io/stl_reader.h"
 #include "spira/mesh/mesh_weld.h"
 
@@ -20,22 +15,11 @@ namespace {
 
 constexpr double kMetre = 1000.0;  // ROS mesh files are in metres (COLLADA after its <unit>)
 
-TriangleMesh readWithAssimp(const std::filesystem::path& file)
+// Assimp reads the other formats, in the import helper: a damaged file must not take Spira down.
+TriangleMesh readInHelper(const std::filesystem::path& file)
 {
-  Assimp::Importer importer;
-  // rviz keeps the COLLADA unit (Assimp folds it into the root transform) but not the up axis.
-  importer.SetPropertyBool(AI_CONFIG_IMPORT_COLLADA_IGNORE_UP_DIRECTION, true);
-  const aiScene* scene =
-      importer.ReadFile(file.string(), aiProcess_Triangulate | aiProcess_JoinIdenticalVertices |
-                                           aiProcess_ValidateDataStructure);
-  if (!scene || (scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE))
-    throw IoError("the link mesh " + file.string() + " could not be read: " + importer.GetErrorString(),
-                  "re-export it as STL or COLLADA from the robot's support package");
-  TriangleMesh mesh = collectSceneTriangles(*scene).mesh;
-  if (mesh.faces.empty())
-    throw IoError("the link mesh " + file.string() + " holds no triangles",
-                  "re-export it as STL or COLLADA from the robot's support package");
-  return mesh;
+  NullProgress progress;
+  return readIsolated("import.link_mesh", file, ParamSet{}, progress).mesh;
 }
 
 }  // namespace
@@ -52,7 +36,7 @@ TriangleMesh readLinkMesh(const std::filesystem::path& file, const Vec3& scale)
     NullProgress progress;
     mesh = weldTriangleSoup(readStl(file, progress).soup.vertices);
   } else {
-    mesh = readWithAssimp(file);
+    mesh = readInHelper(file);
   }
   const Vec3 s = scale * kMetre;
   for (Vec3& v : mesh.vertices) v = v.cwiseProduct(s);

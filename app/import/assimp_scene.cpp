@@ -1,4 +1,4 @@
-#include "spira/io/assimp_scene.h"
+#include "assimp_scene.h"
 
 #include <assimp/scene.h>
 
