@@ -233,8 +233,11 @@ Pipe::Pipe()
     throw IoError("cannot start the import helper: no pipe", "close other programs and try again");
   read = import_server::highDescriptor(fds[0]);
   write = import_server::highDescriptor(fds[1]);
-  if (read < 0 || write < 0)
+  if (read < 0 || write < 0) {
+    closeRead();
+    closeWrite();
     throw IoError("cannot start the import helper: out of file descriptors", "close other files");
+  }
 }
 
 Pipe::~Pipe()
