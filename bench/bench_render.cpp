@@ -38,7 +38,7 @@
 #include "spira/ui/cell_panel.h"
 #include "spira/ui/interactive_quality.h"
 #include "spira/ui/main_window.h"
-#include "spira/ui/plan_job.h"
+#include "spira/pipeline/document_plan.h"
 #include "spira/ui/process_chart.h"
 #include "spira/ui/scene_view.h"
 #include "spira/ui/spiral_layer.h"
@@ -286,7 +286,7 @@ void benchPlanning(const QString& label, const std::filesystem::path& stl, const
   window.sceneView()->showResults(r, doc.part()->T_world_part);
   const double sceneMs = msSince(t2);
   t2 = Clock::now();
-  window.processChart()->setPath(r.process.get(), true, spira::ui::planWindow(r));
+  window.processChart()->setPath(r.process.get(), true, spira::planWindow(r));
   const double chartMs = msSince(t2);
   t2 = Clock::now();
   window.sceneView()->render();

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <filesystem>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -51,6 +52,8 @@ int cmdInfo(const std::vector<std::string>& args);
 int cmdPlugins(const std::vector<std::string>& args);
 int cmdSample(const std::vector<std::string>& args);
 int cmdPlan(const std::vector<std::string>& args);
+// 'plan PROJECT.spira': `args` still holds the project's path among the options.
+int cmdPlanProject(Args args, const std::filesystem::path& project);
 int cmdField(const std::vector<std::string>& args);
 int cmdKin(const std::vector<std::string>& args);
 int cmdExport(const std::vector<std::string>& args);

@@ -1,4 +1,6 @@
+#include <algorithm>
 #include <chrono>
+#include <filesystem>
 #include <iomanip>
 #include <iostream>
 
@@ -11,6 +13,8 @@
 #include "spira/base/error.h"
 #include "spira/base/output_set.h"
 #include "spira/document/cell_file.h"
+#include "spira/document/project_file.h"
+#include "spira/io/isolated_import.h"
 #include "spira/pipeline/export_job.h"
 #include "spira/pipeline/plan_motion.h"
 #include "spira/pipeline/prep_schema.h"
@@ -19,6 +23,8 @@
 #include "spira/planning/plan_files.h"
 #include "spira/planning/plan_schemas.h"
 #include "spira/planning/planner.h"
+
+namespace fs = std::filesystem;
 
 namespace spira::cli {
 namespace {
@@ -82,6 +88,10 @@ int cmdPlan(const std::vector<std::string>& argv)
   ImporterFlags importFlags(registry);
   PlanFlags planFlags(registry);
   Args args = splitArgs(argv);
+  for (size_t i = 0; i < args.rest.size(); ++i)
+    if (fs::path(args.rest[i]).extension() == kProjectExtension && (i == 0 || args.rest[i - 1] != "-o") &&
+        std::find(args.rest.begin(), args.rest.end(), "--help") == args.rest.end())
+      return cmdPlanProject(args, args.rest[i]);
   const bool help = args.takeSwitch("--help");
   const std::string cellFile = args.takeOption("--cell");
   const std::string format = args.takeOption("--export");
@@ -98,6 +108,7 @@ int cmdPlan(const std::vector<std::string>& argv)
     std::cout
         << "usage: spira-cli plan PART -o DIR [--strategy isovalue] [--lower-loop N] [--substrate-z Z] "
            "[--drop] [--level-base]\n"
+           "       spira-cli plan PROJECT.spira -o DIR [--save]\n"
            "                       [--no-mid-surface]\n"
            "                       [--cell CELL] [--keep-collisions] [--export krl|fanuc_tp] [--timing]\n"
            "                       [parameter flags]\n\n"
@@ -114,7 +125,10 @@ int cmdPlan(const std::vector<std::string>& argv)
            "inspect), the robot program is not.\n"
            "A watertight thin-walled solid is planned on its mid-surface (its wall thickness is measured\n"
            "and compared with the bead width); --no-mid-surface refuses it instead. A solid body that is\n"
-           "not a thin wall is refused (docs/thin-walled-solids.md).\n\n"
+           "not a thin wall is refused (docs/thin-walled-solids.md).\n"
+           "A saved project is planned as Spira plans it, with its part, placement, substrate, cell and\n"
+           "settings (no other flags); --save stores the plan in the project (export it with\n"
+           "'spira-cli export PROJECT.spira').\n\n"
         << kPlacementHelp << paramFlagsHelp(targets);
     return kOk;
   }
@@ -136,6 +150,8 @@ int cmdPlan(const std::vector<std::string>& argv)
   const std::optional<RobotCell> cell =
       cellFile.empty() ? std::nullopt : std::optional<RobotCell>(RobotCell(readCellFile(cellFile)));
   if (cell && !cell->canSolve()) throw InputError(cell->ikRefusal(), "choose a cell with a 6-axis arm");
+  // The robot's link meshes are read in the import helper after planning: it loads meanwhile.
+  if (cell) prestartImportHelper();
   const PrepParams prep = prepParamsFrom(prepValues);
 
   const auto t0 = std::chrono::steady_clock::now();

@@ -30,7 +30,7 @@
 #include "spira/ui/param_field.h"
 #include "spira/ui/param_panel.h"
 #include "spira/ui/path_inspector.h"
-#include "spira/ui/plan_job.h"
+#include "spira/pipeline/document_plan.h"
 #include "spira/ui/plan_panel.h"
 #include "spira/ui/point_selection.h"
 #include "spira/ui/scene_view.h"
@@ -142,7 +142,7 @@ TEST(PlanCancel, CancelReturnsAtOnceAndKeepsThePreviousResults)
   EXPECT_GT(std::abs(after3[0] - before3[0]) + std::abs(after3[1] - before3[1]), 1.0);
   ASSERT_FALSE(reports.empty());
   const int stage = progress->currentStage();
-  EXPECT_EQ(stage, ui::planStageAt(reports.back().first));
+  EXPECT_EQ(stage, planStageAt(reports.back().first));
   for (int s = 0; s < stage; ++s) EXPECT_EQ(progress->stagePercent(s), 100) << s;
   std::cout << "[ measure  ] cancelling in stage " << stage << " at " << reports.back().first << " ("
             << reports.back().second.toStdString() << "), " << reports.size() << " progress polls\n";

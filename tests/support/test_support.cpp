@@ -27,13 +27,25 @@ TempDir::~TempDir()
   fs::remove_all(path_, ec);
 }
 
-fs::path sourceDir() { return SPIRA_SOURCE_DIR; }
-fs::path binaryDir() { return SPIRA_BINARY_DIR; }
+fs::path sourceDir()
+{
+  return SPIRA_SOURCE_DIR;
+}
+fs::path binaryDir()
+{
+  return SPIRA_BINARY_DIR;
+}
 
 void writeBytes(const fs::path& path, const std::string& bytes)
 {
   std::ofstream out(path, std::ios::binary);
   out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+}
+
+std::string readBytes(const fs::path& path)
+{
+  std::ifstream in(path, std::ios::binary);
+  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
 }
 
 }  // namespace spira::test

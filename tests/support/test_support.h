@@ -23,5 +23,7 @@ std::filesystem::path sourceDir();
 std::filesystem::path binaryDir();
 // Writes `bytes` to `path` as is (test inputs, including deliberately broken ones).
 void writeBytes(const std::filesystem::path& path, const std::string& bytes);
+// The whole file as is; empty when it cannot be read.
+std::string readBytes(const std::filesystem::path& path);
 
 }  // namespace spira::test

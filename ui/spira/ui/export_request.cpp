@@ -12,7 +12,7 @@
 #include "spira/base/error.h"
 #include "spira/pipeline/prep_schema.h"
 #include "spira/robotcell/robot_cell.h"
-#include "spira/ui/plan_job.h"
+#include "spira/pipeline/document_plan.h"
 
 namespace spira::ui {
 

@@ -15,6 +15,10 @@
 class QLabel;
 class vtkPolyData;
 
+namespace spira {
+struct DocumentPlan;
+}  // namespace spira
+
 namespace spira::ui {
 
 class DisplayPanel;
@@ -31,7 +35,6 @@ class PointSelection;
 class RecentFiles;
 class SceneView;
 class TaskRunner;
-struct PlanJobResult;
 struct TaskOutcome;
 
 struct MainWindowOptions {
@@ -117,7 +120,7 @@ class MainWindow : public QMainWindow {
   void onDocumentChanged(const ChangeSet& changes);
   void refreshScene(bool partChanged);
   void refreshResults();
-  void finishPlan(const TaskOutcome& outcome, const DocumentState& snapshot, const PlanJobResult& result);
+  void finishPlan(const TaskOutcome& outcome, const DocumentState& snapshot, const DocumentPlan& result);
   void refreshTree();
   void refreshUndoActions();
   void refreshTitle();

@@ -9,7 +9,7 @@
 #include "spira/ui/log_panel.h"
 #include "spira/ui/main_window.h"
 #include "spira/ui/path_inspector.h"
-#include "spira/ui/plan_job.h"
+#include "spira/pipeline/document_plan.h"
 #include "spira/ui/plan_panel.h"
 #include "spira/ui/process_chart.h"
 #include "spira/ui/scene_view.h"
@@ -49,7 +49,7 @@ void MainWindow::plan()
     return;
   }
   const auto snapshot = std::make_shared<const DocumentState>(doc_.snapshot());
-  auto result = std::make_shared<PlanJobResult>();
+  auto result = std::make_shared<DocumentPlan>();
   const PlanSettings& settings = *snapshot->settings;
   log_->info(tr("Planning %1 (%2) ...").arg(fromStd(snapshot->part->name), fromStd(settings.decomposerId)));
   planning_ = true;
@@ -58,7 +58,7 @@ void MainWindow::plan()
   planPanel_->progress()->start();
   tasks_->start(
       tr("Planning %1").arg(fromStd(snapshot->part->name)),
-      [snapshot, result](Progress& progress) { *result = runPlan(*snapshot, builtinRegistry(), progress); },
+      [snapshot, result](Progress& progress) { *result = planDocument(*snapshot, builtinRegistry(), progress); },
       [this, snapshot, result](const TaskOutcome& outcome) { finishPlan(outcome, *snapshot, *result); },
       TaskRunner::Display::Signals);
 }
@@ -69,7 +69,7 @@ void MainWindow::cancelPlan()
 }
 
 void MainWindow::finishPlan(const TaskOutcome& outcome, const DocumentState& snapshot,
-                            const PlanJobResult& result)
+                            const DocumentPlan& result)
 {
   planning_ = false;
   actions_.plan->setEnabled(true);

@@ -11,7 +11,7 @@
 
 #include "spira/document/results.h"
 #include "spira/ui/log_panel.h"
-#include "spira/ui/plan_job.h"
+#include "spira/pipeline/document_plan.h"
 
 namespace spira::ui {
 

@@ -31,7 +31,7 @@
 #include "spira/ui/frame_glyphs.h"
 #include "spira/ui/log_panel.h"
 #include "spira/ui/offending_points.h"
-#include "spira/ui/plan_job.h"
+#include "spira/pipeline/document_plan.h"
 #include "spira/ui/point_selection.h"
 #include "spira/ui/process_chart.h"
 #include "spira/ui/scene_view.h"

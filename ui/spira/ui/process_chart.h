@@ -8,7 +8,7 @@
 
 #include <vtkNew.h>
 
-#include "spira/ui/plan_job.h"
+#include "spira/pipeline/document_plan.h"
 
 class QLabel;
 class QVTKOpenGLNativeWidget;

@@ -11,7 +11,7 @@
 #include "spira/ui/color_maps.h"
 
 #include "spira/base/transform.h"
-#include "spira/ui/plan_job.h"
+#include "spira/pipeline/document_plan.h"
 
 class vtkActor;
 class vtkPolyData;

@@ -4,7 +4,7 @@
 
 #include <QWidget>
 
-#include "spira/ui/plan_job.h"
+#include "spira/pipeline/document_plan.h"
 
 class QLabel;
 class QProgressBar;

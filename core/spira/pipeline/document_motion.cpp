@@ -1,4 +1,4 @@
-#include "spira/ui/kinematics_job.h"
+#include "spira/pipeline/document_motion.h"
 
 #include <chrono>
 #include <cstdio>
@@ -12,12 +12,12 @@
 #include "spira/planning/plan_schemas.h"
 #include "spira/robotcell/robot_cell.h"
 
-namespace spira::ui {
+namespace spira {
 
-KinematicsJobResult runKinematics(const DocumentState& snapshot, const Trajectory& plan, double substrateZ,
-                                  Progress& progress)
+DocumentMotion solveDocumentMotion(const DocumentState& snapshot, const Trajectory& plan, double substrateZ,
+                                   Progress& progress)
 {
-  KinematicsJobResult out;
+  DocumentMotion out;
   if (!snapshot.cell || plan.empty()) return out;
   const auto start = std::chrono::steady_clock::now();
   try {
@@ -78,6 +78,7 @@ KinematicsJobResult runKinematics(const DocumentState& snapshot, const Trajector
       out.warnings.push_back("A robot link hits the part, table or positioner at " +
                              std::to_string(motion.robotCollisions) + " checked point(s).");
     for (const auto& w : report.value("cell_warnings", std::vector<std::string>{})) out.warnings.push_back(w);
+    out.ok = motion.ok();
     out.report = std::make_shared<const nlohmann::json>(std::move(report));
     out.result = std::move(result);
   } catch (const Cancelled&) {
@@ -89,4 +90,4 @@ KinematicsJobResult runKinematics(const DocumentState& snapshot, const Trajector
   return out;
 }
 
-}  // namespace spira::ui
+}  // namespace spira

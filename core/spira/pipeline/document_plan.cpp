@@ -1,4 +1,4 @@
-#include "spira/ui/plan_job.h"
+#include "spira/pipeline/document_plan.h"
 
 #include <algorithm>
 #include <chrono>
@@ -10,14 +10,14 @@
 #include "spira/base/progress.h"
 #include "spira/document/invalidation.h"
 #include "spira/mesh/mesh_report.h"
+#include "spira/pipeline/document_motion.h"
 #include "spira/planning/placement_frame.h"
 #include "spira/planning/plan_advice.h"
 #include "spira/planning/plan_files.h"
 #include "spira/planning/plan_schemas.h"
 #include "spira/planning/planner.h"
-#include "spira/ui/kinematics_job.h"
 
-namespace spira::ui {
+namespace spira {
 
 namespace {
 
@@ -74,11 +74,11 @@ int planStageAt(double fraction)
   return 0;
 }
 
-PlanJobResult runPlan(const DocumentState& snapshot, const PluginRegistry& registry, Progress& progress)
+DocumentPlan planDocument(const DocumentState& snapshot, const PluginRegistry& registry, Progress& progress)
 {
   const auto start = std::chrono::steady_clock::now();
   if (!snapshot.part || !snapshot.part->mesh || snapshot.part->mesh->empty())
-    throw InputError("there is no part to plan", "import a part first (File > Import Part...)");
+    throw InputError("the project has no part to plan", "import a part into it first");
   const PlanSettings& settings = *snapshot.settings;
   progress.report(0.0, "checking the mesh");
   // A tilted part is planned in the build frame (world "up") and its results turned back.
@@ -106,7 +106,7 @@ PlanJobResult runPlan(const DocumentState& snapshot, const PluginRegistry& regis
     plan.closure.point = frame.pointToPart(plan.closure.point);
   }
 
-  PlanJobResult out;
+  DocumentPlan out;
   out.feasible = plan.feasible();
   out.depositSummary = plan.deposits.summary();
   if (!out.feasible) {
@@ -166,9 +166,10 @@ PlanJobResult runPlan(const DocumentState& snapshot, const PluginRegistry& regis
   r.setReport(Stage::Process, share(std::move(processReport)));
 
   SubProgress kinematicsProgress(progress, kPlanShare, 1.0, "kinematics");
-  KinematicsJobResult kinematics =
-      runKinematics(snapshot, *r.process, request.substrateZ, kinematicsProgress);
+  DocumentMotion kinematics =
+      solveDocumentMotion(snapshot, *r.process, request.substrateZ, kinematicsProgress);
   out.warnings.insert(out.warnings.end(), kinematics.warnings.begin(), kinematics.warnings.end());
+  out.motionOk = !snapshot.cell || kinematics.ok;
   if (kinematics.result) {
     r.setKinematics(std::move(kinematics.result));
     r.setReport(Stage::Kinematics, std::move(kinematics.report));
@@ -202,4 +203,4 @@ std::optional<PlanWindow> planWindow(const Results& results)
   return w;
 }
 
-}  // namespace spira::ui
+}  // namespace spira

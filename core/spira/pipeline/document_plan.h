@@ -8,11 +8,9 @@
 #include "spira/document/document.h"
 
 namespace spira {
+
 class PluginRegistry;
 class Progress;
-}  // namespace spira
-
-namespace spira::ui {
 
 // One stage of a plan as the progress display shows it: the part of the job's [0, 1] progress it
 // covers. The spans mirror the SubProgress ranges planPart() hands its stages.
@@ -25,12 +23,14 @@ const std::array<PlanStageSpan, kPlanStageCount>& planStageSpans();
 // The stage index whose span holds `fraction` (the last one from its begin on).
 int planStageAt(double fraction);
 
-// What a plan computed off the GUI thread hands back: the staged results (field, generatrices,
+// What planning a document hands back: the staged results (field, generatrices,
 // spiral, process and, with a cell, kinematics, each with its report) and what the user should read about it.
-struct PlanJobResult {
+struct DocumentPlan {
   Results results;
   std::vector<std::string> warnings;
-  bool feasible = false;
+  bool feasible = false;  // the deposit check's verdict on the path
+  // No cell, or the robot follows the path: reached, free of collisions, within its axis speeds.
+  bool motionOk = true;
   std::string summary;         // one line: revolutions, points, heights, build time
   std::string depositSummary;  // the deposit check's verdict in one sentence
   // An infeasible plan: the change Spira planned and found feasible, or what it tried.
@@ -40,9 +40,10 @@ struct PlanJobResult {
   double seconds = 0.0;
 };
 
-// Plans the part of `snapshot` with its settings (worker thread: touches no widget and no
-// Document). Throws InputError when there is no part, and whatever planPart() throws.
-PlanJobResult runPlan(const DocumentState& snapshot, const PluginRegistry& registry, Progress& progress);
+// Plans the part of `snapshot` with its settings, as the GUI (on a worker thread) and
+// `spira-cli plan PROJECT` do; touches no Document. Throws InputError when there is no part, and
+// whatever planPart() throws.
+DocumentPlan planDocument(const DocumentState& snapshot, const PluginRegistry& registry, Progress& progress);
 
 // Stores the results of a plan made on `snapshot` into `doc`, keeping only the stages that the
 // edits made since (while it ran) left valid. Returns the first stage dropped, or nullopt when
@@ -56,4 +57,4 @@ struct PlanWindow {
 };
 std::optional<PlanWindow> planWindow(const Results& results);
 
-}  // namespace spira::ui
+}  // namespace spira

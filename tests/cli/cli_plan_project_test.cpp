@@ -1,0 +1,100 @@
+// spira-cli plan PROJECT.spira: a saved project (part, placement, cell, settings) is planned by the
+// pipeline the GUI's Plan runs and gives the same trajectory; --save stores the plan in the project,
+// which export then takes; options that would override the project are a usage error.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <memory>
+
+#include "builtin_plugins.h"
+#include "cli_runner.h"
+#include "spira/base/progress.h"
+#include "spira/document/cell_file.h"
+#include "spira/document/document.h"
+#include "spira/document/project_file.h"
+#include "spira/mesh/mesh_primitives.h"
+#include "spira/pipeline/document_plan.h"
+#include "spira/planning/joints_csv.h"
+#include "spira/planning/plan_files.h"
+#include "support/test_support.h"
+
+namespace fs = std::filesystem;
+
+namespace spira::test {
+namespace {
+
+// An open cylinder turned 30 degrees about z on the KUKA table cell, 90 points per revolution.
+struct SavedProject {
+  TempDir dir;
+  fs::path file;
+  DocumentState state;
+
+  SavedProject()
+  {
+    Document doc;
+    Part part;
+    part.name = "open_cylinder";
+    part.mesh = std::make_shared<const TriangleMesh>(makeOpenCylinder(50.0, 60.0, 90, 30));
+    doc.setPart(part);
+    doc.setPartPlacement(transformFromXyzRpy(Vec3(5.0, -3.0, 0.0), Vec3(0.0, 0.0, 0.5236)));
+    doc.setCell(readCellFile(sourceDir() / "resources/cells/kuka_kr16_2_table.cell"));
+    doc.setParam(doc.settings()->decomposerId, "points_per_rev", ParamValue(int64_t{90}));
+    file = dir / "wall.spira";
+    doc.saveAs(file);
+    state = doc.state();
+  }
+};
+
+TEST(CliPlanProject, SameTrajectoryAsTheGuiPlanAndSaveStoresIt)
+{
+  SavedProject p;
+  NullProgress progress;
+  const DocumentPlan gui = planDocument(p.state, builtinRegistry(), progress);
+  ASSERT_TRUE(gui.results.kinematics);
+
+  const fs::path out = p.dir / "plan";
+  const CliRun r = runCli({"plan", p.file.string(), "-o", out.string(), "--save"});
+  EXPECT_EQ(r.exitCode, gui.feasible && gui.motionOk ? 0 : 4) << r.err << r.out;
+  EXPECT_EQ(readBytes(out / "trajectory.csv"), trajectoryCsv(gui.results.kinematics->path));
+  EXPECT_EQ(readBytes(out / "joints.csv"), jointsCsv(gui.results.kinematics->joints));
+  const nlohmann::json report = nlohmann::json::parse(readBytes(out / "report.json"));
+  EXPECT_EQ(report.at("part"), "open_cylinder");
+  EXPECT_EQ(report.at("cell"), p.state.cell->name);
+  EXPECT_EQ(report.at("feasible"), gui.feasible);
+  EXPECT_EQ(report.at("n_points"), gui.results.report(Stage::Spiral)->at("n_points"));
+
+  const DocumentState saved = loadProject(p.file);
+  ASSERT_TRUE(saved.results.process);
+  ASSERT_TRUE(saved.results.kinematics);
+  EXPECT_EQ(trajectoryCsv(*saved.results.process), trajectoryCsv(*gui.results.process));
+  // The stored kinematics report differs only in its "seconds".
+  EXPECT_EQ(jointsCsv(saved.results.kinematics->joints), jointsCsv(gui.results.kinematics->joints));
+  EXPECT_EQ(trajectoryCsv(saved.results.kinematics->path), trajectoryCsv(gui.results.kinematics->path));
+
+  const CliRun exported =
+      runCli({"export", p.file.string(), "-o", (p.dir / "program").string(), "--format", "krl", "--force"});
+  EXPECT_EQ(exported.exitCode, 0) << exported.err << exported.out;
+}
+
+TEST(CliPlanProject, OptionsThatWouldOverrideTheProjectAreUsageErrors)
+{
+  SavedProject p;
+  const CliRun r = runCli({"plan", p.file.string(), "-o", (p.dir / "plan").string(), "--h", "2"});
+  EXPECT_EQ(r.exitCode, 2) << r.err;
+  EXPECT_NE(r.err.find("takes only -o DIR and --save, not '--h'"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(p.dir / "plan" / "trajectory.csv"));
+  const CliRun noOut = runCli({"plan", p.file.string()});
+  EXPECT_EQ(noOut.exitCode, 2) << noOut.err;
+}
+
+TEST(CliPlanProject, DamagedProjectIsBadInput)
+{
+  TempDir dir;
+  std::ofstream(dir / "broken.spira") << "SPIRAPRJ but not really";
+  const CliRun r = runCli({"plan", (dir / "broken.spira").string(), "-o", (dir / "plan").string()});
+  EXPECT_EQ(r.exitCode, 3) << r.err;
+  EXPECT_NE(r.err.find("broken.spira"), std::string::npos) << r.err;
+}
+
+}  // namespace
+}  // namespace spira::test
