@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include "spira/document/document.h"
+#include "spira/mesh/mesh_primitives.h"
 #include "spira/ui/document_tree.h"
 #include "spira/ui/log_panel.h"
 #include "spira/ui/main_window.h"
@@ -182,6 +183,35 @@ TEST(MainWindow, SavedProjectOpensWithTheSamePartAndIsRemembered)
   EXPECT_FALSE(openAndWait(w, qpath(dir / "damaged.spira")));
   EXPECT_EQ(doc.part()->mesh->faceCount(), kTriangles);
   EXPECT_EQ(w.logPanel()->level(w.logPanel()->count() - 1), LogLevel::Error);
+}
+
+// Settings that contradict each other (here the travel-speed limits, crossed) can only come from a
+// file: the project opens, the contradiction is a warning naming the fix, and nothing throws out of
+// the views that read the settings.
+TEST(MainWindow, ProjectWithCrossedLimitsOpensWithAWarning)
+{
+  TempDir dir;
+  const std::filesystem::path project = dir / "crossed.spira";
+  {
+    Document doc;
+    Part part;
+    part.name = "cylinder";
+    part.mesh = std::make_shared<const TriangleMesh>(makeOpenCylinder(50.0, 60.0, 90, 30));
+    doc.setPart(part);
+    doc.setParam(PlanSettings::kProcessSection, "ts_min", 30.0);
+    doc.setParam(PlanSettings::kProcessSection, "ts_max", 10.0);
+    doc.saveAs(project);
+  }
+  Document doc;
+  MainWindow w(doc, MainWindowOptions{false, false});
+  showAndWait(w);
+  ASSERT_TRUE(openAndWait(w, qpath(project))) << w.lastErrorMessage().toStdString();
+  ASSERT_TRUE(doc.part());
+  bool warned = false;
+  for (int i = 0; i < w.logPanel()->count(); ++i)
+    warned = warned || (w.logPanel()->level(i) == LogLevel::Warning &&
+                        w.logPanel()->text(i).contains("travel-speed limits are crossed (ts_min >= ts_max)"));
+  EXPECT_TRUE(warned);
 }
 
 TEST(MainWindow, ScreenshotShowsThePartInTheCentreOfTheView)

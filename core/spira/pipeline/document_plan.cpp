@@ -179,6 +179,22 @@ DocumentPlan planDocument(const DocumentState& snapshot, const PluginRegistry& r
   return out;
 }
 
+std::vector<SettingsProblem> settingsProblems(const PlanSettings& settings)
+{
+  std::vector<SettingsProblem> out;
+  try {
+    spiralSettingsFrom(settings.section(PlanSettings::kSpiralSection));
+  } catch (const Error& e) {
+    out.push_back({e.what(), e.hint()});
+  }
+  try {
+    processSettingsFrom(settings.section(PlanSettings::kProcessSection));
+  } catch (const Error& e) {
+    out.push_back({e.what(), e.hint()});
+  }
+  return out;
+}
+
 std::optional<Stage> storePlanResults(Document& doc, const DocumentState& snapshot, const Results& computed)
 {
   const std::optional<Stage> stale = firstInvalidatedStage(snapshot, doc.state());

@@ -45,6 +45,14 @@ struct DocumentPlan {
 // whatever planPart() throws.
 DocumentPlan planDocument(const DocumentState& snapshot, const PluginRegistry& registry, Progress& progress);
 
+// What in `settings` would stop a plan before it starts: values that contradict each other (only a
+// file can bring them: the panels refuse them) or a calibration table that cannot be read. Shown
+// when a project opens, so the user learns it before planning.
+struct SettingsProblem {
+  std::string what, hint;
+};
+std::vector<SettingsProblem> settingsProblems(const PlanSettings& settings);
+
 // Stores the results of a plan made on `snapshot` into `doc`, keeping only the stages that the
 // edits made since (while it ran) left valid. Returns the first stage dropped, or nullopt when
 // all were stored.

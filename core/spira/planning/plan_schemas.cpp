@@ -1,5 +1,8 @@
 #include "spira/planning/plan_schemas.h"
 
+#include <cmath>
+#include <variant>
+
 #include "spira/base/error.h"
 #include "spira/base/number_text.h"
 #include "spira/path/calibration_table.h"
@@ -181,6 +184,18 @@ ProcessSettings processSettingsFrom(const ParamSet& given)
     s.calibration = readCalibrationCsv(table);
   }
   return s;
+}
+
+double beadWidthOf(const ParamSet& values)
+{
+  const ParamDef* def = processSchema().find("bead_width");
+  const double fallback = std::get<double>(def->defaultValue);
+  if (!values.has("bead_width")) return fallback;
+  const ParamValue& v = values.values().at("bead_width");
+  const double* width = std::get_if<double>(&v);
+  const bool inRange = width && std::isfinite(*width) && *width > 0.0 && (!def->min || *width >= *def->min) &&
+                       (!def->max || *width <= *def->max);
+  return inRange ? *width : fallback;
 }
 
 }  // namespace spira

@@ -17,4 +17,8 @@ const ParamSchema& processSchema();
 SpiralSettings spiralSettingsFrom(const ParamSet& values);
 ProcessSettings processSettingsFrom(const ParamSet& values);
 
+// The bead width (mm) of process `values`, its default when absent or out of range: for views,
+// which must not throw on settings a file made inconsistent, nor read the calibration table.
+double beadWidthOf(const ParamSet& values);
+
 }  // namespace spira

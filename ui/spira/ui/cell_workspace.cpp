@@ -104,8 +104,7 @@ void CellWorkspace::updateMotion()
 {
   const auto& k = doc_.results().kinematics;
   const Transform T_scene_part = doc_.part() ? doc_.part()->T_world_part : Transform::Identity();
-  const double bead =
-      0.5 * processSettingsFrom(doc_.settings()->section(PlanSettings::kProcessSection)).beadWidth;
+  const double bead = 0.5 * beadWidthOf(doc_.settings()->section(PlanSettings::kProcessSection));
   bead_->setMotion(robot_->hasCell() ? k.get() : nullptr, T_scene_part, bead);
   if (!robot_->hasCell())
     simulation_->setMotion(nullptr, tr("Choose a cell (Cell dock) and plan to simulate the robot."));

@@ -17,6 +17,7 @@
 #include "spira/base/error.h"
 #include "spira/document/project_file.h"
 #include "spira/io/import_service.h"
+#include "spira/pipeline/document_plan.h"
 #include "spira/ui/log_panel.h"
 #include "spira/ui/main_window.h"
 #include "spira/ui/recent_files.h"
@@ -167,6 +168,9 @@ bool MainWindow::openProjectFile(const QString& path)
   }
   QApplication::restoreOverrideCursor();
   log_->info(tr("Opened project %1.").arg(QDir::toNativeSeparators(path)));
+  for (const SettingsProblem& p : settingsProblems(*doc_.settings()))
+    log_->warning(tr("The project's settings cannot be planned: %1.").arg(fromStd(p.what)),
+                  tr("Change them in the Plan panel: %1.").arg(fromStd(p.hint)));
   recent_->add(path);
   rememberDirectory(path);
   emit fileOpened(path, true);
