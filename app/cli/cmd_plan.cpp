@@ -23,6 +23,7 @@
 #include "spira/planning/plan_files.h"
 #include "spira/planning/plan_schemas.h"
 #include "spira/planning/planner.h"
+#include "spira/plugin/strategy_name.h"
 
 namespace fs = std::filesystem;
 
@@ -163,7 +164,7 @@ int cmdPlan(const std::vector<std::string>& argv)
   const double importSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
   PlanRequest req{part.mesh, part.report};
-  req.decomposerId = strategy.find('.') == std::string::npos ? "decomposer." + strategy : strategy;
+  req.decomposerId = decomposerIdOf(strategy);
   req.lowerLoopOverride = placement.lowerLoop;
   req.substrateZ = placement.substrateZ;
   req.params = planFlags.values;

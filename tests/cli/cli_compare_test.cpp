@@ -63,7 +63,7 @@ TEST(CliCompare, PlanarSlicingLeavesTheWindowWhereCtppStaysInside)
   EXPECT_EQ(report["h_min"], 1.8);
   EXPECT_EQ(report["h_max"], 2.2);
 
-  const nlohmann::json* iso = find(report, "decomposer.isovalue");
+  const nlohmann::json* iso = find(report, "isovalue");
   const nlohmann::json* planar = find(report, "planar_2.5d");
   ASSERT_TRUE(iso && planar);
   EXPECT_TRUE((*iso)["ran"].get<bool>());
@@ -91,7 +91,7 @@ TEST(CliCompare, PlanarSlicingLeavesTheWindowWhereCtppStaysInside)
   std::string header;
   const auto rows = readCompareCsv(out / "compare.csv", &header);
   EXPECT_EQ(header, "strategy,x,y,z,height");
-  ASSERT_EQ(rows.at("decomposer.isovalue").size(), (*iso)["n_points"].get<size_t>());
+  ASSERT_EQ(rows.at("isovalue").size(), (*iso)["n_points"].get<size_t>());
   ASSERT_EQ(rows.at("planar_2.5d").size(), (*planar)["n_points"].get<size_t>());
   // Planar points on the slanted edge need less than h_min where the edge is just above a plane.
   size_t low = 0;
@@ -112,7 +112,7 @@ TEST(CliCompare, AFailingStrategyIsListedNotAnError)
   EXPECT_NE(r.err.find("no strategy plans this part feasibly"), std::string::npos) << r.err;
   std::ifstream in(out / "compare.json");
   const nlohmann::json report = nlohmann::json::parse(in);
-  const nlohmann::json* iso = find(report, "decomposer.isovalue");
+  const nlohmann::json* iso = find(report, "isovalue");
   ASSERT_TRUE(iso);
   EXPECT_FALSE((*iso)["ran"].get<bool>());
   EXPECT_FALSE((*iso)["feasible"].get<bool>());

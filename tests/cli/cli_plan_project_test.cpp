@@ -61,6 +61,7 @@ TEST(CliPlanProject, SameTrajectoryAsTheGuiPlanAndSaveStoresIt)
   EXPECT_EQ(report.at("part"), "open_cylinder");
   EXPECT_EQ(report.at("cell"), p.state.cell->name);
   EXPECT_EQ(report.at("feasible"), gui.feasible);
+  EXPECT_EQ(report.at("strategy"), "isovalue");  // the one name, as 'plan PART' writes it
   EXPECT_EQ(report.at("n_points"), gui.results.report(Stage::Spiral)->at("n_points"));
 
   const DocumentState saved = loadProject(p.file);

@@ -78,6 +78,13 @@ TEST(CliPlan, CylinderWritesTheContractedFiles)
   EXPECT_EQ(report["part_type"], "open");
   EXPECT_EQ(report["strategy"], "isovalue");
   EXPECT_EQ(report["n_generatrices"], 180);
+  // The plugin's full id names the same strategy, and the report writes its one name.
+  TempDir full;
+  ASSERT_EQ(runCli({"plan", sample("open_cylinder.stl").string(), "-o", full.path().string(), "--h", "1",
+                    "--points-per-rev", "180", "--strategy", "decomposer.isovalue"})
+                .exitCode,
+            0);
+  EXPECT_EQ(readJson(full / "report.json")["strategy"], "isovalue");
   EXPECT_EQ(report["n_startup_revolutions"], 6);
   EXPECT_TRUE(report["feasible"].get<bool>());
   EXPECT_EQ(report["violations"], 0);

@@ -2,6 +2,7 @@
 
 #include "spira/base/error.h"
 #include "spira/plugin/plugin_registry.h"
+#include "spira/plugin/strategy_name.h"
 
 namespace spira {
 namespace {
@@ -76,6 +77,16 @@ TEST(PluginId, Validation)
   EXPECT_FALSE(isValidPluginId("export.Fanuc"));
   EXPECT_FALSE(isValidPluginId(".x"));
   EXPECT_FALSE(isValidPluginId("a..b"));
+}
+
+TEST(StrategyName, OneNameWrittenBothAccepted)
+{
+  EXPECT_EQ(strategyName("decomposer.isovalue"), "isovalue");
+  EXPECT_EQ(strategyName("isovalue"), "isovalue");
+  EXPECT_EQ(strategyName("planar_2.5d"), "planar_2.5d");
+  EXPECT_EQ(decomposerIdOf("geodesic"), "decomposer.geodesic");
+  EXPECT_EQ(decomposerIdOf("decomposer.geodesic"), "decomposer.geodesic");
+  EXPECT_EQ(decomposerIdOf(strategyName("decomposer.envelope_projection")), "decomposer.envelope_projection");
 }
 
 }  // namespace

@@ -10,6 +10,7 @@
 #include "spira/planning/crotch_flags.h"
 #include "spira/planning/level_base.h"
 #include "spira/planning/plan_schemas.h"
+#include "spira/plugin/strategy_name.h"
 
 namespace spira {
 namespace {
@@ -17,12 +18,6 @@ namespace {
 struct Window {
   double hMin, hMax;
 };
-
-std::string shortId(const std::string& id)
-{
-  const size_t dot = id.find('.');
-  return dot == std::string::npos ? id : id.substr(dot + 1);
-}
 
 // Wider than h +/- 50 % no WAAM process lays a steady bead: such a window is not advice.
 constexpr double kWidestWindow = 0.5;
@@ -153,16 +148,17 @@ PlanAdvice adviseChange(const PluginRegistry& registry, const PlanRequest& reque
     if (p->id() != request.decomposerId) others.push_back(p->id());
   for (const std::string& id : others) {
     if (trial.exhausted()) break;
-    const std::string change = "use the " + shortId(id) + " strategy";
-    if (trial.plans(trial.with(id, std::nullopt), change)) return done(change, "--strategy " + shortId(id));
+    const std::string change = "use the " + strategyName(id) + " strategy";
+    if (trial.plans(trial.with(id, std::nullopt), change))
+      return done(change, "--strategy " + strategyName(id));
   }
   if (window)
     for (const std::string& id : others) {
       if (trial.exhausted()) break;
       const auto [widen, flags] = windowText(*window);
-      const std::string change = "use the " + shortId(id) + " strategy and " + widen;
+      const std::string change = "use the " + strategyName(id) + " strategy and " + widen;
       if (trial.plans(trial.with(id, window), change))
-        return done(change, "--strategy " + shortId(id) + " " + flags);
+        return done(change, "--strategy " + strategyName(id) + " " + flags);
     }
   advice.tried = trial.tried;
   if (failed) {

@@ -6,6 +6,7 @@
 
 #include "spira/base/number_text.h"
 #include "spira/base/units.h"
+#include "spira/plugin/strategy_name.h"
 
 namespace spira {
 namespace {
@@ -145,7 +146,7 @@ nlohmann::json planReportJson(const PlanOutput& plan, const std::string& strateg
   const SpiralReport& s = plan.spiral.report;
   nlohmann::json j;
   j["part_type"] = plan.branching ? "multi_branch" : partTypeName(plan.topology.partClass);
-  j["strategy"] = strategy;
+  j["strategy"] = strategyName(strategy);
   j["field"] = plan.fieldKind;
   j["n_generatrices"] = plan.generatrices.lines.size();
   j["generatrix_length_min"] = s.generatrixLengthMin;

@@ -12,6 +12,7 @@
 #include "spira/base/number_text.h"
 #include "spira/planning/plan_schemas.h"
 #include "spira/planning/planar_baseline.h"
+#include "spira/plugin/strategy_name.h"
 
 namespace spira {
 
@@ -43,7 +44,7 @@ StrategyOutcome planWith(const PluginRegistry& registry, const PlanRequest& requ
                          const Comparison& c, Progress& progress)
 {
   StrategyOutcome s;
-  s.strategy = id;
+  s.strategy = strategyName(id);
   s.kind = "ctpp";
   PlanRequest r = request;
   r.decomposerId = id;

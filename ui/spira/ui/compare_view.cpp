@@ -34,6 +34,7 @@
 #include "spira/document/document.h"
 #include "spira/mesh/mesh_report.h"
 #include "spira/plugin/plugin_registry.h"
+#include "spira/plugin/strategy_name.h"
 #include "spira/ui/color_maps.h"
 #include "spira/ui/comparison_reader.h"
 #include "spira/ui/interaction_style.h"
@@ -262,7 +263,7 @@ void CompareView::setComparison(Comparison comparison)
     for (size_t i = 0; i < comparison_.strategies.size(); ++i) {
       const StrategyOutcome& s = comparison_.strategies[i];
       QString name = fromStd(s.strategy);
-      if (const Plugin* p = registry_.find(s.strategy)) name = fromStd(p->label());
+      if (const Plugin* p = registry_.find(decomposerIdOf(s.strategy))) name = fromStd(p->label());
       if (s.strategy == "planar_2.5d") name = tr("Planar 2.5D slicing (baseline)");
       c->addItem(s.ran ? name : tr("%1 (failed)").arg(name), static_cast<int>(i));
       if (k == 0 && s.ran && !s.points.empty()) ran.push_back(static_cast<int>(i));
