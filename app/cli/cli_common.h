@@ -5,12 +5,10 @@
 #include <string>
 #include <vector>
 
+#include "spira/base/exit_code.h"
 #include "spira/plugin/param_cli.h"
 
 namespace spira::cli {
-
-// Exit codes of spira-cli, documented in README.md.
-enum ExitCode : int { kOk = 0, kInternal = 1, kUsage = 2, kBadInput = 3, kInfeasible = 4, kCancelled = 130 };
 
 // A malformed command line (unknown flag, missing argument): exit code 2.
 class UsageError : public std::runtime_error {

@@ -73,7 +73,7 @@ int cmdCompare(const std::vector<std::string>& argv)
            "DIR/compare.csv (strategy,x,y,z,height per point). A strategy that fails is listed,\n"
            "not an error; exit code 4 when no strategy plans the part feasibly.\n\n"
         << kPlacementHelp << paramFlagsHelp(targets);
-    return kOk;
+    return kExitOk;
   }
   const std::string outDir = args.takeOption("-o");
   const PartPlacement placement = PartPlacement::take(args);
@@ -100,7 +100,7 @@ int cmdCompare(const std::vector<std::string>& argv)
   if (!anyFeasible)
     std::cerr << "no strategy plans this part feasibly: see each strategy's failure above and 'spira-cli "
                  "plan PART --strategy S' for the points the deposit check rejects\n";
-  return anyFeasible ? kOk : kInfeasible;
+  return anyFeasible ? kExitOk : kExitInfeasible;
 }
 
 }  // namespace spira::cli

@@ -140,7 +140,7 @@ int writeCsv(const ExportSource& source, const std::optional<RobotCell>& cell, c
   }
   replaceOutputSet(outDir, OutputKind::Program, files);
   std::cout << "wrote " << (outDir / "trajectory.csv").string() << solvedText << "\n";
-  return kOk;
+  return kExitOk;
 }
 
 }  // namespace
@@ -169,7 +169,7 @@ int cmdExport(const std::vector<std::string>& argv)
            "flags are listed with --format FORMAT --help. --format csv writes the planned\n"
            "trajectory.csv and, with a cell, joints.csv for other tools.\n"
         << paramFlagsHelp(targets);
-    return kOk;
+    return kExitOk;
   }
   const std::string outDir = args.takeOption("-o");
   const std::string cellFile = args.takeOption("--cell");
@@ -218,7 +218,7 @@ int cmdExport(const std::vector<std::string>& argv)
   NullProgress progress;
   const ExportOutcome exported = exportTrajectory(registry, source.trajectory, job, outDir, progress);
   printExportSummary(exported, std::cout);
-  return kOk;
+  return kExitOk;
 }
 
 }  // namespace spira::cli

@@ -52,7 +52,7 @@ int cmdField(const std::vector<std::string>& argv)
            "lower boundary); harmonic: Laplace field, 0 on the lower boundary and 1 on the upper one\n"
            "(open parts).\n"
         << paramFlagsHelp(importFlags.targets());
-    return kOk;
+    return kExitOk;
   }
   const std::string out = args.takeOption("-o");
   std::string kind = args.takeOption("--kind");
@@ -97,7 +97,7 @@ int cmdField(const std::vector<std::string>& argv)
   else
     writeFieldVtp(outPath, part.mesh, values, kind == "harmonic" ? "harmonic" : "geodesic_distance");
   std::cout << "wrote " << out << " (" << values.size() << " vertices, " << kind << " field)\n";
-  return kOk;
+  return kExitOk;
 }
 
 }  // namespace spira::cli

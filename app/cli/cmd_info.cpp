@@ -180,7 +180,7 @@ int cmdInfo(const std::vector<std::string>& argv)
            "A watertight part is measured as a solid: its wall thickness, whether it is a thin wall that\n"
            "'plan' lays on its mid-surface, or a solid body it refuses (docs/thin-walled-solids.md).\n"
         << paramFlagsHelp(flags.targets());
-    return kOk;
+    return kExitOk;
   }
   const bool json = args.takeSwitch("--json");
   const bool timing = args.takeSwitch("--timing");
@@ -218,7 +218,7 @@ int cmdInfo(const std::vector<std::string>& argv)
       if (timing) j["timings_s"]["skeleton"] = skeletonSection->seconds;
     }
     std::cout << j.dump(2) << "\n";
-    return kOk;
+    return kExitOk;
   }
   std::cout << "file: " << file << " (" << part.importerId << ", coordinates in "
             << lengthUnitSymbol(part.sourceUnit) << ", shown in mm)\n";
@@ -231,7 +231,7 @@ int cmdInfo(const std::vector<std::string>& argv)
   if (timing) printTiming(part, std::cout);
   if (timing && solid) std::cout << "timing: solid " << solid->seconds << " s\n";
   if (timing && skeletonSection) std::cout << "timing: skeleton " << skeletonSection->seconds << " s\n";
-  return kOk;
+  return kExitOk;
 }
 
 }  // namespace spira::cli

@@ -66,7 +66,7 @@ int cmdKin(const std::vector<std::string>& argv)
                  "the controller's convention (degrees). Inverse kinematics: every joint solution, with its\n"
                  "configuration, that puts the TCP at the pose X Y Z (mm) A B C (KUKA, degrees) or W P R\n"
                  "(FANUC, degrees), in the robot's base frame ($ROBROOT / World).\n";
-    return kOk;
+    return kExitOk;
   }
   const bool fk = args.takeSwitch("--fk");
   const bool ik = args.takeSwitch("--ik");
@@ -94,13 +94,13 @@ int cmdKin(const std::vector<std::string>& argv)
       printJoints(cell, q, std::cout);
       std::cout << "  dexterity " << cell.ik().dexterity(q) << "\n";
     }
-    return kOk;
+    return kExitOk;
   }
   const Transform tcp = poseFrom(v, kuka);
   const auto solutions = cell.ik().solveAll(tcp * flangeTcp.inverse());
   if (solutions.empty()) {
     std::cout << "no solution: the pose is out of the robot's reach\n";
-    return kInfeasible;
+    return kExitInfeasible;
   }
   size_t within = 0;
   for (const IkSolution& s : solutions) {
@@ -110,7 +110,7 @@ int cmdKin(const std::vector<std::string>& argv)
     within += s.withinLimits;
   }
   std::cout << solutions.size() << " solution(s), " << within << " within the controller limits\n";
-  return within ? kOk : kInfeasible;
+  return within ? kExitOk : kExitInfeasible;
 }
 
 }  // namespace spira::cli

@@ -131,7 +131,7 @@ int cmdPlan(const std::vector<std::string>& argv)
            "settings (no other flags); --save stores the plan in the project (export it with\n"
            "'spira-cli export PROJECT.spira').\n\n"
         << kPlacementHelp << paramFlagsHelp(targets);
-    return kOk;
+    return kExitOk;
   }
   const std::string outDir = args.takeOption("-o");
   std::string strategy = args.takeOption("--strategy");
@@ -235,7 +235,7 @@ int cmdPlan(const std::vector<std::string>& argv)
       std::cout << "timing " << stage << ": " << seconds << " s\n";
   std::cout << "wrote " << outDir << "/trajectory.csv" << (motion ? ", joints.csv" : "")
             << " and report.json\n";
-  return ok ? kOk : kInfeasible;
+  return ok ? kExitOk : kExitInfeasible;
 }
 
 }  // namespace spira::cli

@@ -81,7 +81,7 @@ int cmdPlanProject(Args args, const fs::path& project)
     doc.save();
     std::cout << "saved the plan into " << project.string() << "\n";
   }
-  return plan.feasible && plan.motionOk ? kOk : kInfeasible;
+  return plan.feasible && plan.motionOk ? kExitOk : kExitInfeasible;
 }
 
 }  // namespace spira::cli

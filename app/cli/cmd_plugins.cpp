@@ -15,7 +15,7 @@ int cmdPlugins(const std::vector<std::string>& argv)
   if (args.takeSwitch("--help")) {
     std::cout << "usage: spira-cli plugins [--json]\n\n"
                  "Lists every plugin with its full parameter schema (key, type, default, range, unit).\n";
-    return kOk;
+    return kExitOk;
   }
   const bool json = args.takeSwitch("--json");
   args.finish("plugins", 0, 0);
@@ -35,7 +35,7 @@ int cmdPlugins(const std::vector<std::string>& argv)
       out.push_back(j);
     }
     std::cout << out.dump(2) << "\n";
-    return kOk;
+    return kExitOk;
   }
   for (const auto& p : registry.all()) {
     std::cout << p->id() << "  (" << pluginKindName(p->kind()) << ")  " << p->label() << "\n    "
@@ -50,7 +50,7 @@ int cmdPlugins(const std::vector<std::string>& argv)
     if (!help.empty()) std::cout << help.substr(help.find('\n', 1) + 1);
     std::cout << "\n";
   }
-  return kOk;
+  return kExitOk;
 }
 
 }  // namespace spira::cli

@@ -39,7 +39,7 @@ int cmdSample(const std::vector<std::string>& argv)
         << "usage: spira-cli sample NAME -o FILE\n\n"
            "Writes a sample part made in code: open-cylinder (R 50, H 100 mm), dome (hemisphere R 60 mm),\n"
            "cone (R 60 to 40, H 100 mm). The format follows FILE's extension (.stl, .obj, .ply).\n";
-    return kOk;
+    return kExitOk;
   }
   const std::string out = args.takeOption("-o");
   const auto positional = args.finish("sample", 1, 1);
@@ -48,7 +48,7 @@ int cmdSample(const std::vector<std::string>& argv)
   writeMesh(mesh, out);
   std::cout << "wrote " << out << " (" << mesh.vertexCount() << " vertices, " << mesh.faceCount()
             << " triangles)\n";
-  return kOk;
+  return kExitOk;
 }
 
 }  // namespace spira::cli

@@ -31,6 +31,7 @@ constexpr const char* kUsageText =
 
 int dispatch(const std::string& command, const std::vector<std::string>& rest)
 {
+  using namespace spira;
   using namespace spira::cli;
   if (command == "info") return cmdInfo(rest);
   if (command == "plugins") return cmdPlugins(rest);
@@ -47,6 +48,7 @@ int dispatch(const std::string& command, const std::vector<std::string>& rest)
 
 int main(int argc, char** argv)
 {
+  using namespace spira;
   using namespace spira::cli;
   std::vector<std::string> args(argv + 1, argv + argc);
   int threads = 0;
@@ -54,15 +56,15 @@ int main(int argc, char** argv)
     threads = takeThreadCount(args);
   } catch (const UsageError& e) {
     std::cerr << "spira-cli: " << e.what() << " (" << e.hint() << ")\n";
-    return kUsage;
+    return kExitUsage;
   }
   if (args.empty() || args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
     std::cout << kUsageText;
-    return args.empty() ? kUsage : kOk;
+    return args.empty() ? kExitUsage : kExitOk;
   }
   if (args[0] == "--version") {
     std::cout << "spira-cli " << spira::kVersion << "\n";
-    return kOk;
+    return kExitOk;
   }
   try {
     const std::string command = args[0];
@@ -70,27 +72,27 @@ int main(int argc, char** argv)
     return runWithThreads(threads, [&] { return dispatch(command, args); });
   } catch (const UsageError& e) {
     std::cerr << "spira-cli: " << e.what() << " (" << e.hint() << ")\n";
-    return kUsage;
+    return kExitUsage;
   } catch (const spira::InfeasibleError& e) {
     std::cerr << "spira-cli: " << e.fullMessage() << "\n";
-    return kInfeasible;
+    return kExitInfeasible;
   } catch (const spira::InputError& e) {
     std::cerr << "spira-cli: " << e.fullMessage() << "\n";
-    return kBadInput;
+    return kExitBadInput;
   } catch (const spira::IoError& e) {
     std::cerr << "spira-cli: " << e.fullMessage() << "\n";
-    return kBadInput;
+    return kExitBadInput;
   } catch (const spira::Error& e) {
     std::cerr << "spira-cli: internal error: " << e.fullMessage() << " (please report this)\n";
-    return kInternal;
+    return kExitInternal;
   } catch (const spira::Cancelled&) {
     std::cerr << "spira-cli: cancelled\n";
-    return kCancelled;
+    return kExitCancelled;
   } catch (const std::bad_alloc&) {
     std::cerr << "spira-cli: out of memory (try a coarser mesh or close other programs)\n";
-    return kInternal;
+    return kExitInternal;
   } catch (const std::exception& e) {
     std::cerr << "spira-cli: internal error: " << e.what() << " (please report this)\n";
-    return kInternal;
+    return kExitInternal;
   }
 }

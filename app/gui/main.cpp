@@ -132,15 +132,15 @@ int main(int argc, char** argv)
   std::string error;
   if (!parse(argc, argv, cmd, error)) {
     std::cerr << "spira: " << error << "\n" << kUsage;
-    return spira::ui::kExitUsage;
+    return spira::kExitUsage;
   }
   if (cmd.help) {
     std::cout << kUsage;
-    return spira::ui::kExitSuccess;
+    return spira::kExitOk;
   }
   if (cmd.version) {
     std::cout << "spira " << spira::kVersion << "\n";
-    return spira::ui::kExitSuccess;
+    return spira::kExitOk;
   }
   if (!cmd.screenshot.empty()) {
     // Checked here too so a typo fails fast, without starting an X server first.
@@ -148,7 +148,7 @@ int main(int argc, char** argv)
     if (!std::filesystem::is_regular_file(cmd.file, ec)) {
       std::cerr << "spira: cannot read " << cmd.file << ": no such file\n"
                 << "hint: check the path of the part or project to show\n";
-      return spira::ui::kExitBadInput;
+      return spira::kExitBadInput;
     }
     reexecUnderXvfb(argv);
     if (!hasDisplay() && !std::getenv("QT_QPA_PLATFORM")) setenv("QT_QPA_PLATFORM", "offscreen", 1);

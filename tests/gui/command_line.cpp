@@ -141,7 +141,7 @@ TEST(CommandLine, ScreenshotWithoutOpenGLFailsInsteadOfWritingABlankView)
   env.insert("QT_QPA_PLATFORM", "offscreen");
   env.insert("SPIRA_NO_XVFB", "1");  // no X server to fall back on: Qt's offscreen platform has no OpenGL
   const SpiraRun r = runSpira({"--screenshot", png, stl}, env);
-  EXPECT_EQ(r.exitCode, ui::kExitFailure);
+  EXPECT_EQ(r.exitCode, kExitBadInput);
   EXPECT_TRUE(r.err.contains("spira: no OpenGL context")) << r.err.toStdString();
   EXPECT_FALSE(QFile::exists(png));
 }
@@ -151,12 +151,12 @@ TEST(CommandLine, BadInputExitsWithThreeAndSaysWhy)
   TempDir dir;
   const QString png = qpath(dir / "never.png");
   SpiraRun r = runSpira({"--screenshot", png, qpath(dir / "missing.stl")});
-  EXPECT_EQ(r.exitCode, ui::kExitBadInput);
+  EXPECT_EQ(r.exitCode, kExitBadInput);
   EXPECT_TRUE(r.err.contains("spira: cannot read")) << r.err.toStdString();
 
   writeBytes(dir / "broken.stl", std::string(84, '\0') + "\x05\x00\x00\x00");  // claims 5 facets, has none
   r = runSpira({"--screenshot", png, qpath(dir / "broken.stl")});
-  EXPECT_EQ(r.exitCode, ui::kExitBadInput);
+  EXPECT_EQ(r.exitCode, kExitBadInput);
   EXPECT_TRUE(r.err.contains("spira: ")) << r.err.toStdString();
   EXPECT_TRUE(r.err.contains("hint: ")) << r.err.toStdString();
   EXPECT_FALSE(QFile::exists(png));
@@ -164,8 +164,8 @@ TEST(CommandLine, BadInputExitsWithThreeAndSaysWhy)
 
 TEST(CommandLine, UsageErrorsExitWithTwo)
 {
-  EXPECT_EQ(runSpira({"--screenshot"}).exitCode, ui::kExitUsage);
-  EXPECT_EQ(runSpira({"--no-such-option"}).exitCode, ui::kExitUsage);
+  EXPECT_EQ(runSpira({"--screenshot"}).exitCode, kExitUsage);
+  EXPECT_EQ(runSpira({"--no-such-option"}).exitCode, kExitUsage);
   const SpiraRun r = runSpira({"--help"});
   EXPECT_EQ(r.exitCode, 0);
   EXPECT_TRUE(r.out.contains("--screenshot IMAGE FILE"));

@@ -221,7 +221,7 @@ TEST(MainWindow, ScreenshotShowsThePartInTheCentreOfTheView)
   const QString png = qpath(dir / "shot.png");
   QString errors;
   QTextStream err(&errors);
-  ASSERT_EQ(ui::takeScreenshot({stl, png}, err), ui::kExitSuccess) << errors.toStdString();
+  ASSERT_EQ(ui::takeScreenshot({stl, png}, err), kExitOk) << errors.toStdString();
   QImage shot(png);
   ASSERT_FALSE(shot.isNull());
   EXPECT_EQ(shot.size(), QSize(1280, 800));
@@ -251,7 +251,7 @@ TEST(MainWindow, ScreenshotShowsThePartInTheCentreOfTheView)
 
   // Unreadable input: exit code 3 and a message.
   errors.clear();
-  EXPECT_EQ(ui::takeScreenshot({qpath(dir / "none.stl"), png}, err), ui::kExitBadInput);
+  EXPECT_EQ(ui::takeScreenshot({qpath(dir / "none.stl"), png}, err), kExitBadInput);
   EXPECT_TRUE(errors.startsWith("spira: "));
 }
 

@@ -66,7 +66,7 @@ int takeScreenshot(const ScreenshotRequest& request, QTextStream& err)
                QStringLiteral("no OpenGL context for the 3D view on the '%1' platform")
                    .arg(QGuiApplication::platformName()),
                QStringLiteral("run with an X display, or headless through xvfb-run -a"));
-    return kExitFailure;
+    return kExitBadInput;
   }
 
   bool ok = false;
@@ -83,7 +83,7 @@ int takeScreenshot(const ScreenshotRequest& request, QTextStream& err)
     return kExitBadInput;
   }
 
-  int planned = kExitSuccess;
+  int planned = kExitOk;
   if (request.plan) {
     bool finished = false;
     TaskOutcome outcome;
@@ -106,13 +106,13 @@ int takeScreenshot(const ScreenshotRequest& request, QTextStream& err)
   if (image.isNull()) {
     printError(err, QStringLiteral("the window could not be rendered"),
                QStringLiteral("run under a display, or headless with xvfb-run -a"));
-    return kExitFailure;
+    return kExitBadInput;
   }
   QImageWriter writer(request.output, format);
   if (!writer.write(image)) {
     printError(err, QStringLiteral("cannot write %1: %2").arg(request.output, writer.errorString()),
                QStringLiteral("choose a folder you can write to"));
-    return kExitFailure;
+    return kExitBadInput;
   }
   return planned;
 }

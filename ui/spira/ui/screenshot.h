@@ -3,18 +3,11 @@
 #include <QSize>
 #include <QString>
 
+#include "spira/base/exit_code.h"
+
 class QTextStream;
 
 namespace spira::ui {
-
-// Exit codes of the `spira` executable.
-enum ExitCode : int {
-  kExitSuccess = 0,
-  kExitFailure = 1,   // could not render or write the image
-  kExitUsage = 2,     // bad command line
-  kExitBadInput = 3,  // the part or project could not be read, or planned
-  kExitInfeasible = 4,  // planned, but the plan is not feasible (the image is still written)
-};
 
 struct ScreenshotRequest {
   QString input;   // a part (any importer extension) or a .spira project
@@ -24,8 +17,8 @@ struct ScreenshotRequest {
 };
 
 // The `spira --screenshot` command: opens `input` in a fresh main window (default layout, no
-// prompts), plans it when asked, renders it and writes the whole window to `output`. Needs a QApplication. Errors are
-// written to `err` as "spira: message" and "hint: ..."; returns an ExitCode.
+// prompts), plans it when asked, renders it and writes the whole window to `output`. Needs a QApplication.
+// Errors are written to `err` as "spira: message" and "hint: ..."; returns an ExitCode.
 int takeScreenshot(const ScreenshotRequest& request, QTextStream& err);
 
 }  // namespace spira::ui
