@@ -353,5 +353,45 @@ TEST(ProjectFile, PlanSettingsJsonKeepsTypes)
   EXPECT_EQ(PlanSettings().closureFinderId, "closure.max_min_geodesic");
 }
 
+// The cell's URDFs are stored relative to the project too: a job folder moved or copied whole finds
+// its own robot files, a project copied alone still finds them where they were.
+TEST(ProjectFile, CellFilesAreFoundRelativeToTheProjectThenWhereTheyWere)
+{
+  namespace fs = std::filesystem;
+  test::TempDir dir;
+  fs::create_directories(dir / "job" / "robots");
+  fs::create_directories(dir / "shared");
+  test::writeBytes(dir / "job" / "robots" / "arm.urdf", "<robot/>");
+  test::writeBytes(dir / "shared" / "turntable.urdf", "<robot/>");
+  CellRecord cell;
+  cell.name = "job cell";
+  cell.robotUrdf = (dir / "job" / "robots" / "arm.urdf").string();
+  cell.positionerUrdf = (dir / "shared" / "turntable.urdf").string();
+  Document doc;
+  doc.setCell(cell);
+  doc.saveAs(dir / "job" / "job.spira");
+  EXPECT_EQ(
+      payloadOf(test::readBytes(dir / "job" / "job.spira"))["relative_paths"],
+      nlohmann::json({{"robot_urdf", "robots/arm.urdf"}, {"positioner_urdf", "../shared/turntable.urdf"}}));
+
+  fs::rename(dir / "job", dir / "moved");
+  const DocumentState moved = loadProject(dir / "moved" / "job.spira");
+  ASSERT_TRUE(moved.cell);
+  EXPECT_EQ(moved.cell->robotUrdf, (dir / "moved" / "robots" / "arm.urdf").string());
+  EXPECT_EQ(moved.cell->positionerUrdf, (dir / "shared" / "turntable.urdf").string());
+
+  fs::create_directories(dir / "elsewhere" / "deeper");
+  fs::copy_file(dir / "moved" / "job.spira", dir / "elsewhere" / "deeper" / "job.spira");
+  const DocumentState alone = loadProject(dir / "elsewhere" / "deeper" / "job.spira");
+  ASSERT_TRUE(alone.cell);
+  EXPECT_EQ(alone.cell->robotUrdf, (dir / "job" / "robots" / "arm.urdf").string())
+      << "the absolute path, as saved";
+  EXPECT_EQ(alone.cell->positionerUrdf, (dir / "shared" / "turntable.urdf").string());
+
+  // Bytes alone (no folder) keep the absolute paths.
+  EXPECT_EQ(decodeProject(test::readBytes(dir / "moved" / "job.spira")).cell->robotUrdf,
+            (dir / "job" / "robots" / "arm.urdf").string());
+}
+
 }  // namespace
 }  // namespace spira

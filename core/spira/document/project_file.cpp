@@ -43,7 +43,38 @@ std::uint64_t getLe(std::string_view in, std::size_t offset, int bytes)
   return v;
 }
 
-nlohmann::json toProjectJson(const DocumentState& s)
+// The cell's files relative to the project's folder, next to the absolute paths the cell holds: a
+// project moved together with them (or shipped with Spira) finds them through these, a project
+// moved alone through the absolute ones.
+constexpr const char* kRelativePaths = "relative_paths";
+
+std::string relativePath(const std::string& file, const std::filesystem::path& dir)
+{
+  const std::filesystem::path p(file);
+  if (file.empty() || !p.is_absolute()) return {};
+  return p.lexically_relative(dir).generic_string();
+}
+
+nlohmann::json relativePaths(const CellRecord& c, const std::filesystem::path& dir)
+{
+  nlohmann::json j = nlohmann::json::object();
+  if (const std::string r = relativePath(c.robotUrdf, dir); !r.empty()) j["robot_urdf"] = r;
+  if (const std::string r = relativePath(c.positionerUrdf, dir); !r.empty()) j["positioner_urdf"] = r;
+  return j;
+}
+
+// `file` as the relative path stored under `key` finds it from `dir`, when that file exists.
+void resolveRelative(const nlohmann::json& paths, const char* key, const std::filesystem::path& dir,
+                     std::string& file)
+{
+  if (!paths.contains(key)) return;
+  const std::filesystem::path candidate =
+      (dir / codec::stringField(paths, key, "project relative_paths")).lexically_normal();
+  std::error_code ec;
+  if (std::filesystem::is_regular_file(candidate, ec)) file = candidate.string();
+}
+
+nlohmann::json toProjectJson(const DocumentState& s, const std::filesystem::path& dir)
 {
   nlohmann::json j;
   j["application"] = kApplicationName;
@@ -51,12 +82,13 @@ nlohmann::json toProjectJson(const DocumentState& s)
   j["part"] = s.part ? partToJson(*s.part) : nlohmann::json(nullptr);
   j["substrate"] = substrateToJson(s.substrate ? *s.substrate : Substrate());
   j["cell"] = s.cell ? cellRecordToJson(*s.cell) : nlohmann::json(nullptr);
+  if (s.cell && !dir.empty()) j[kRelativePaths] = relativePaths(*s.cell, dir);
   j["plan"] = planSettingsToJson(s.settings ? *s.settings : PlanSettings());
   j["results"] = resultsToJson(s.results);
   return j;
 }
 
-DocumentState fromProjectJson(const nlohmann::json& j)
+DocumentState fromProjectJson(const nlohmann::json& j, const std::filesystem::path& dir)
 {
   const std::string what = "project";
   codec::stringField(j, "spira_version", what);
@@ -65,7 +97,17 @@ DocumentState fromProjectJson(const nlohmann::json& j)
   if (!part.is_null()) s.part = std::make_shared<const Part>(partFromJson(part));
   s.substrate = std::make_shared<const Substrate>(substrateFromJson(codec::field(j, "substrate", what)));
   const auto& cell = codec::field(j, "cell", what);
-  if (!cell.is_null()) s.cell = std::make_shared<const CellRecord>(cellRecordFromJson(cell));
+  if (!cell.is_null()) {
+    CellRecord record = cellRecordFromJson(cell);
+    if (j.contains(kRelativePaths) && !dir.empty()) {
+      const nlohmann::json& paths = j[kRelativePaths];
+      if (!paths.is_object())
+        throw InputError("the project's relative_paths is not an object", "save the project again in Spira");
+      resolveRelative(paths, "robot_urdf", dir, record.robotUrdf);
+      resolveRelative(paths, "positioner_urdf", dir, record.positionerUrdf);
+    }
+    s.cell = std::make_shared<const CellRecord>(std::move(record));
+  }
   s.settings = std::make_shared<const PlanSettings>(planSettingsFromJson(codec::field(j, "plan", what)));
   s.results = resultsFromJson(codec::field(j, "results", what));
   return s;
@@ -81,9 +123,9 @@ std::uint32_t crc32(std::string_view bytes)
   return c ^ 0xFFFFFFFFu;
 }
 
-std::string encodeProject(const DocumentState& state)
+std::string encodeProject(const DocumentState& state, const std::filesystem::path& projectDir)
 {
-  const std::vector<std::uint8_t> cbor = nlohmann::json::to_cbor(toProjectJson(state));
+  const std::vector<std::uint8_t> cbor = nlohmann::json::to_cbor(toProjectJson(state, projectDir));
   const std::string_view payload(reinterpret_cast<const char*>(cbor.data()), cbor.size());
   std::string out;
   out.reserve(kHeaderSize + payload.size() + kTrailerSize);
@@ -95,7 +137,7 @@ std::string encodeProject(const DocumentState& state)
   return out;
 }
 
-DocumentState decodeProject(std::string_view bytes)
+DocumentState decodeProject(std::string_view bytes, const std::filesystem::path& projectDir)
 {
   if (bytes.empty())
     throw InputError(std::string(kNotProject) + " (the file is empty)", "choose a .spira file");
@@ -115,19 +157,30 @@ DocumentState decodeProject(std::string_view bytes)
   const std::string_view payload = bytes.substr(kHeaderSize, static_cast<std::size_t>(size));
   if (crc32(payload) != static_cast<std::uint32_t>(getLe(bytes, kHeaderSize + payload.size(), 4)))
     throw InputError(std::string(kDamaged) + " (checksum mismatch)", kDamagedHint);
-  return fromProjectJson(json_read::parseCbor(payload, "the project content", kDamagedHint));
+  return fromProjectJson(json_read::parseCbor(payload, "the project content", kDamagedHint), projectDir);
 }
+
+namespace {
+
+std::filesystem::path folderOf(const std::filesystem::path& project)
+{
+  std::error_code ec;
+  const std::filesystem::path absolute = std::filesystem::absolute(project, ec);
+  return ec ? std::filesystem::path() : absolute.parent_path();
+}
+
+}  // namespace
 
 void saveProject(const DocumentState& state, const std::filesystem::path& path)
 {
-  writeFileAtomically(path, encodeProject(state));
+  writeFileAtomically(path, encodeProject(state, folderOf(path)));
 }
 
 DocumentState loadProject(const std::filesystem::path& path)
 {
   const std::string bytes = readFile(path);
   try {
-    return decodeProject(bytes);
+    return decodeProject(bytes, folderOf(path));
   } catch (const InputError& e) {
     throw InputError(path.filename().string() + ": " + e.what(), e.hint());
   }

@@ -25,11 +25,13 @@ constexpr std::uint32_t kProjectFormatVersion = 1;
 constexpr std::string_view kProjectMagic = "SPIRAPRJ";
 constexpr const char* kProjectExtension = ".spira";
 
-// The complete file contents for `state`.
-std::string encodeProject(const DocumentState& state);
+// The complete file contents for `state`, for a project file in `projectDir`: the cell's files are
+// also stored relative to it (empty: not stored).
+std::string encodeProject(const DocumentState& state, const std::filesystem::path& projectDir = {});
 // Parses file contents; throws InputError (not a Spira project, newer format, truncated or
-// damaged, malformed content).
-DocumentState decodeProject(std::string_view bytes);
+// damaged, malformed content). The cell's files are looked for relative to `projectDir` first,
+// at their absolute paths when not there (or when `projectDir` is empty).
+DocumentState decodeProject(std::string_view bytes, const std::filesystem::path& projectDir = {});
 
 // Writes atomically (the previous file survives any failure); throws IoError.
 void saveProject(const DocumentState& state, const std::filesystem::path& path);

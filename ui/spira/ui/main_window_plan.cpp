@@ -4,12 +4,13 @@
 #include <QLocale>
 
 #include "builtin_plugins.h"
+#include "spira/pipeline/document_plan.h"
+#include "spira/plugin/strategy_name.h"
 #include "spira/ui/display_panel.h"
 #include "spira/ui/joint_chart.h"
 #include "spira/ui/log_panel.h"
 #include "spira/ui/main_window.h"
 #include "spira/ui/path_inspector.h"
-#include "spira/pipeline/document_plan.h"
 #include "spira/ui/plan_panel.h"
 #include "spira/ui/process_chart.h"
 #include "spira/ui/scene_view.h"
@@ -51,14 +52,17 @@ void MainWindow::plan()
   const auto snapshot = std::make_shared<const DocumentState>(doc_.snapshot());
   auto result = std::make_shared<DocumentPlan>();
   const PlanSettings& settings = *snapshot->settings;
-  log_->info(tr("Planning %1 (%2) ...").arg(fromStd(snapshot->part->name), fromStd(settings.decomposerId)));
+  log_->info(tr("Planning %1 (%2 strategy) ...")
+                 .arg(fromStd(snapshot->part->name), fromStd(strategyName(settings.decomposerId))));
   planning_ = true;
   actions_.plan->setEnabled(false);
   actions_.cancelPlan->setEnabled(true);
   planPanel_->progress()->start();
   tasks_->start(
       tr("Planning %1").arg(fromStd(snapshot->part->name)),
-      [snapshot, result](Progress& progress) { *result = planDocument(*snapshot, builtinRegistry(), progress); },
+      [snapshot, result](Progress& progress) {
+        *result = planDocument(*snapshot, builtinRegistry(), progress);
+      },
       [this, snapshot, result](const TaskOutcome& outcome) { finishPlan(outcome, *snapshot, *result); },
       TaskRunner::Display::Signals);
 }
