@@ -10,6 +10,7 @@
 #include "spira/mesh/mesh_report.h"
 #include "spira/planning/strategy_compare.h"
 #include "spira/plugin/plugin_registry.h"
+#include "spira/plugin/strategy_name.h"
 
 namespace spira::test {
 namespace {
@@ -26,10 +27,11 @@ Comparison compare(const TriangleMesh& mesh, int pointsPerRev)
   return compareStrategies(builtinRegistry(), request, progress);
 }
 
+// The outcome of decomposer `id`; a comparison names each strategy by its one name.
 const StrategyOutcome& outcome(const Comparison& c, const std::string& id)
 {
   for (const StrategyOutcome& s : c.strategies)
-    if (s.strategy == id) return s;
+    if (s.strategy == strategyName(id)) return s;
   throw std::runtime_error("no strategy " + id);
 }
 
