@@ -30,15 +30,16 @@
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
 
+#include "builtin_plugins.h"
 #include "spira/document/cell_file.h"
 #include "spira/document/document.h"
 #include "spira/io/mesh_writers.h"
 #include "spira/mesh/mesh_primitives.h"
+#include "spira/pipeline/document_plan.h"
 #include "spira/ui/application.h"
 #include "spira/ui/cell_panel.h"
 #include "spira/ui/interactive_quality.h"
 #include "spira/ui/main_window.h"
-#include "spira/pipeline/document_plan.h"
 #include "spira/ui/process_chart.h"
 #include "spira/ui/scene_view.h"
 #include "spira/ui/spiral_layer.h"
@@ -232,7 +233,7 @@ bool waitFor(const std::function<bool()>& done, int ms)
 void benchPlanning(const QString& label, const std::filesystem::path& stl, const QString& cellFile = {})
 {
   spira::Document doc;
-  spira::ui::MainWindow window(doc, spira::ui::MainWindowOptions{false, false});
+  spira::ui::MainWindow window(doc, spira::builtinRegistry(), spira::ui::MainWindowOptions{false, false});
   window.resize(1280, 800);
   window.show();
   if (!QTest::qWaitForWindowExposed(&window, 5000)) std::printf("the window was not exposed\n");

@@ -16,6 +16,7 @@
 #include <QTextStream>
 #include <QTimer>
 
+#include "builtin_plugins.h"
 #include "spira/base/version.h"
 #include "spira/document/document.h"
 #include "spira/io/isolated_import.h"
@@ -168,11 +169,11 @@ int main(int argc, char** argv)
     request.input = QString::fromLocal8Bit(cmd.file.c_str());
     request.output = QString::fromLocal8Bit(cmd.screenshot.c_str());
     request.plan = cmd.plan;
-    return spira::ui::takeScreenshot(request, err);
+    return spira::ui::takeScreenshot(request, spira::builtinRegistry(), err);
   }
 
   spira::Document doc;
-  spira::ui::MainWindow window(doc);
+  spira::ui::MainWindow window(doc, spira::builtinRegistry());
   window.show();
   if (cmd.recover) {
     if (auto* comfort = window.findChild<spira::ui::ComfortFeatures*>()) comfort->offerRecovery(true);

@@ -16,7 +16,9 @@
 #include <QString>
 
 #include <gtest/gtest.h>
+
 #include <vtkRenderer.h>
+#include "builtin_plugins.h"
 
 #include "spira/base/atomic_file.h"
 #include "spira/document/cell_file.h"
@@ -63,7 +65,7 @@ bool insideView(vtkRenderer* renderer, const std::array<double, 6>& b)
 TEST(CellView, BundledCellAroundThePart)
 {
   Document doc;
-  MainWindow w(doc, MainWindowOptions{false, false});
+  MainWindow w(doc, builtinRegistry(), MainWindowOptions{false, false});
   showAndWait(w);
   ASSERT_TRUE(openAndWait(w, qpath(sourceDir() / "resources" / "samples" / "dome.stl")));
   const QImage partOnly = w.captureImage();
@@ -157,7 +159,7 @@ TEST(CellView, MissingMeshShowsAStandInAndAWarning)
   writeBytes(dir.path() / "broken.cell", cell);
 
   Document doc;
-  MainWindow w(doc, MainWindowOptions{false, false});
+  MainWindow w(doc, builtinRegistry(), MainWindowOptions{false, false});
   showAndWait(w);
   ASSERT_TRUE(w.cellWorkspace()->cellPanel()->loadCell(qpath(dir.path() / "broken.cell")));
   ui::RobotLayer& robot = w.cellWorkspace()->robotLayer();
@@ -174,7 +176,7 @@ TEST(CellView, MissingMeshShowsAStandInAndAWarning)
 TEST(CellView, PointsOutOfReachAreListedAndSelectable)
 {
   Document doc;
-  MainWindow w(doc, MainWindowOptions{false, false});
+  MainWindow w(doc, builtinRegistry(), MainWindowOptions{false, false});
   showAndWait(w);
   TempDir dir;
   ASSERT_TRUE(openAndWait(w, qpath(writeOpenCylinderStl(dir.path()))));

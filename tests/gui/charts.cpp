@@ -13,6 +13,7 @@
 
 #include <QVTKOpenGLNativeWidget.h>
 #include <gtest/gtest.h>
+
 #include <vtkAxis.h>
 #include <vtkCamera.h>
 #include <vtkChartXY.h>
@@ -20,6 +21,7 @@
 #include <vtkRenderer.h>
 #include <vtkTable.h>
 #include <vtkVariant.h>
+#include "builtin_plugins.h"
 
 #include "spira/base/units.h"
 #include "spira/document/document.h"
@@ -129,7 +131,7 @@ class PlannedCylinder : public testing::Test {
  protected:
   void SetUp() override
   {
-    w = std::make_unique<MainWindow>(doc, MainWindowOptions{false, false});
+    w = std::make_unique<MainWindow>(doc, builtinRegistry(), MainWindowOptions{false, false});
     showAndWait(*w);
     ASSERT_TRUE(openAndWait(*w, qpath(writeOpenCylinderStl(dir.path()))));
     ASSERT_TRUE(planAndWait(*w));

@@ -21,11 +21,13 @@
 #include <QTimer>
 
 #include <gtest/gtest.h>
+
 #include <vtkCallbackCommand.h>
 #include <vtkCommand.h>
 #include <vtkNew.h>
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
+#include "builtin_plugins.h"
 
 #include "spira/base/error.h"
 #include "spira/base/progress.h"
@@ -93,7 +95,7 @@ TEST(Presets, SaveLoadRoundTripAndBadNames)
 TEST(Presets, ApplyingOneIsOneUndoStepInThePlanPanel)
 {
   Document doc;
-  MainWindow w(doc, MainWindowOptions{false, false});
+  MainWindow w(doc, builtinRegistry(), MainWindowOptions{false, false});
   ui::PresetBar* bar = comfortOf(w)->presetBar();
   ASSERT_NE(bar, nullptr);
   EXPECT_TRUE(w.planPanel()->isAncestorOf(bar));
@@ -132,7 +134,7 @@ TEST(Autosave, RecoversTheDocumentAfterACrash)
   DocumentState crashed;
   {
     Document doc;
-    MainWindow w(doc, MainWindowOptions{false, false});
+    MainWindow w(doc, builtinRegistry(), MainWindowOptions{false, false});
     ui::Autosave autosave(doc, {recovery, 40});
     EXPECT_FALSE(autosave.recoveryAvailable());
     ASSERT_TRUE(openAndWait(w, domeFile()));
@@ -187,7 +189,7 @@ TEST(Autosave, SecondLiveSessionNeitherRecoversNorOverwritesTheFirst)
 TEST(Themes, LightAndDarkAreLegibleAndSaved)
 {
   Document doc;
-  MainWindow w(doc, MainWindowOptions{false, false});
+  MainWindow w(doc, builtinRegistry(), MainWindowOptions{false, false});
   showAndWait(w);
   ASSERT_TRUE(openAndWait(w, domeFile()));
   ASSERT_TRUE(planAndWait(w));
@@ -241,7 +243,7 @@ TEST(Themes, LightAndDarkAreLegibleAndSaved)
 TEST(HelpMenu, AboutShortcutsAndTheGuidedSample)
 {
   Document doc;
-  MainWindow w(doc, MainWindowOptions{false, false});
+  MainWindow w(doc, builtinRegistry(), MainWindowOptions{false, false});
   showAndWait(w);
   const QString about = ui::aboutText();
   for (const char* text :
@@ -301,7 +303,7 @@ TEST(HelpMenu, AboutShortcutsAndTheGuidedSample)
 TEST(InteractiveQuality, FastWhileAJobRunsFullQualityAfterwardsAndInPictures)
 {
   Document doc;
-  MainWindow w(doc, MainWindowOptions{false, false});
+  MainWindow w(doc, builtinRegistry(), MainWindowOptions{false, false});
   showAndWait(w);
   auto* quality = w.sceneView()->findChild<ui::InteractiveQuality*>();
   ASSERT_NE(quality, nullptr);
@@ -372,7 +374,7 @@ TEST(UiWatchdog, SeesABlockedGuiThread)
 TEST(UiWatchdog, TheGuiThreadStaysResponsiveWhileTheDomePlans)
 {
   Document doc;
-  MainWindow w(doc, MainWindowOptions{false, false});
+  MainWindow w(doc, builtinRegistry(), MainWindowOptions{false, false});
   showAndWait(w);
   ASSERT_TRUE(openAndWait(w, domeFile()));
   ui::UiWatchdog dog(10);

@@ -167,7 +167,7 @@ TEST(CompareView, RunsEveryStrategyOnThePartInTheBackground)
 {
   TempDir dir;
   Document doc;
-  MainWindow w(doc, MainWindowOptions{false, false});
+  MainWindow w(doc, builtinRegistry(), MainWindowOptions{false, false});
   showAndWait(w);
   ASSERT_TRUE(openAndWait(w, qpath(sourceDir() / "resources" / "samples" / "dome.stl")));
   w.actions().compareStrategies->trigger();

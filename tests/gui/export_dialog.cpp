@@ -13,7 +13,9 @@
 #include <QTabWidget>
 
 #include <gtest/gtest.h>
+
 #include <nlohmann/json.hpp>
+#include "builtin_plugins.h"
 
 #include "spira/base/units.h"
 #include "spira/document/document.h"
@@ -58,7 +60,7 @@ TEST(ExportDialog, PreviewsWarnsAndWritesTheProgram)
 {
   TempDir dir;
   Document doc;
-  MainWindow w(doc, MainWindowOptions{false, false});
+  MainWindow w(doc, builtinRegistry(), MainWindowOptions{false, false});
   showAndWait(w);
 
   // Before a plan there is nothing to export: the dialog says so and Export is off.

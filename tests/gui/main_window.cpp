@@ -9,6 +9,8 @@
 
 #include <gtest/gtest.h>
 
+#include "builtin_plugins.h"
+
 #include "spira/document/document.h"
 #include "spira/mesh/mesh_primitives.h"
 #include "spira/ui/document_tree.h"
@@ -51,7 +53,7 @@ TEST(MainWindow, ImportShowsThePartAndUndoRedoGoThroughTheActions)
   TempDir dir;
   const QString stl = qpath(writeOpenCylinderStl(dir.path()));
   Document doc;
-  MainWindow w(doc, MainWindowOptions{false, false});
+  MainWindow w(doc, builtinRegistry(), MainWindowOptions{false, false});
   showAndWait(w);
   EXPECT_FALSE(w.actions().undo->isEnabled());
   EXPECT_FALSE(w.sceneView()->hasPart());
@@ -98,7 +100,7 @@ TEST(MainWindow, FailedImportLeavesTheDocumentUnchangedAndShowsErrorAndHint)
   const QString good = qpath(writeOpenCylinderStl(dir.path()));
   writeBytes(dir / "broken.stl", "solid broken\n facet normal 0 0 1\n  outer loop\n   vertex 0 0\n");
   Document doc;
-  MainWindow w(doc, MainWindowOptions{false, false});
+  MainWindow w(doc, builtinRegistry(), MainWindowOptions{false, false});
   showAndWait(w);
   ASSERT_TRUE(openAndWait(w, good));
   const auto partBefore = doc.part();
@@ -128,7 +130,7 @@ TEST(MainWindow, HostileFilesAreRefusedWithAMessageAndTheWindowStaysUp)
 {
   TempDir dir;
   Document doc;
-  MainWindow w(doc, MainWindowOptions{false, false});
+  MainWindow w(doc, builtinRegistry(), MainWindowOptions{false, false});
   showAndWait(w);
   ASSERT_TRUE(openAndWait(w, qpath(writeOpenCylinderStl(dir.path()))));
   const auto partBefore = doc.part();
@@ -154,7 +156,7 @@ TEST(MainWindow, SavedProjectOpensWithTheSamePartAndIsRemembered)
   const QString project = qpath(dir / "job.spira");
   {
     Document doc;
-    MainWindow w(doc, MainWindowOptions{false, false});
+    MainWindow w(doc, builtinRegistry(), MainWindowOptions{false, false});
     showAndWait(w);
     ASSERT_TRUE(openAndWait(w, stl));
     EXPECT_TRUE(w.isWindowModified());
@@ -165,7 +167,7 @@ TEST(MainWindow, SavedProjectOpensWithTheSamePartAndIsRemembered)
     EXPECT_EQ(w.windowTitle(), "job.spira[*]");
   }
   Document doc;
-  MainWindow w(doc, MainWindowOptions{false, false});
+  MainWindow w(doc, builtinRegistry(), MainWindowOptions{false, false});
   showAndWait(w);
   ASSERT_TRUE(openAndWait(w, project));
   ASSERT_TRUE(doc.part());
@@ -203,7 +205,7 @@ TEST(MainWindow, ProjectWithCrossedLimitsOpensWithAWarning)
     doc.saveAs(project);
   }
   Document doc;
-  MainWindow w(doc, MainWindowOptions{false, false});
+  MainWindow w(doc, builtinRegistry(), MainWindowOptions{false, false});
   showAndWait(w);
   ASSERT_TRUE(openAndWait(w, qpath(project))) << w.lastErrorMessage().toStdString();
   ASSERT_TRUE(doc.part());
@@ -221,14 +223,14 @@ TEST(MainWindow, ScreenshotShowsThePartInTheCentreOfTheView)
   const QString png = qpath(dir / "shot.png");
   QString errors;
   QTextStream err(&errors);
-  ASSERT_EQ(ui::takeScreenshot({stl, png}, err), kExitOk) << errors.toStdString();
+  ASSERT_EQ(ui::takeScreenshot({stl, png}, builtinRegistry(), err), kExitOk) << errors.toStdString();
   QImage shot(png);
   ASSERT_FALSE(shot.isNull());
   EXPECT_EQ(shot.size(), QSize(1280, 800));
 
   // The same window without a part, captured the same way, is the reference background.
   Document doc;
-  MainWindow w(doc, MainWindowOptions{false, false});
+  MainWindow w(doc, builtinRegistry(), MainWindowOptions{false, false});
   showAndWait(w);
   const QImage empty = w.captureImage();
   ASSERT_EQ(empty.size(), shot.size());
@@ -251,7 +253,7 @@ TEST(MainWindow, ScreenshotShowsThePartInTheCentreOfTheView)
 
   // Unreadable input: exit code 3 and a message.
   errors.clear();
-  EXPECT_EQ(ui::takeScreenshot({qpath(dir / "none.stl"), png}, err), kExitBadInput);
+  EXPECT_EQ(ui::takeScreenshot({qpath(dir / "none.stl"), png}, builtinRegistry(), err), kExitBadInput);
   EXPECT_TRUE(errors.startsWith("spira: "));
 }
 

@@ -11,8 +11,10 @@
 #include <QTest>
 
 #include <gtest/gtest.h>
+
 #include <vtkPolyData.h>
 #include <vtkPolyDataMapper.h>
+#include "builtin_plugins.h"
 
 #include "spira/document/cell_file.h"
 #include "spira/document/document.h"
@@ -89,7 +91,7 @@ TEST(Placement, PanelMovesRotatesDropsWithUndoAndTheViewFollows)
 {
   TempDir dir;
   Document doc;
-  MainWindow w(doc, MainWindowOptions{false, false});
+  MainWindow w(doc, builtinRegistry(), MainWindowOptions{false, false});
   showAndWait(w);
   PlacementPanel* panel = placementOf(w);
   ASSERT_NE(panel, nullptr);
@@ -137,7 +139,7 @@ TEST(Placement, LowerBoundaryChoiceListsTheLoopsAndIsOneUndoStep)
 {
   TempDir dir;
   Document doc;
-  MainWindow w(doc, MainWindowOptions{false, false});
+  MainWindow w(doc, builtinRegistry(), MainWindowOptions{false, false});
   showAndWait(w);
   ASSERT_TRUE(openAndWait(w, qpath(writeOpenCylinderStl(dir.path()))));
   PlacementPanel* panel = placementOf(w);
@@ -163,7 +165,7 @@ TEST(Placement, ThePlanFollowsThePlacedPart)
 {
   TempDir dir;
   Document doc;
-  MainWindow w(doc, MainWindowOptions{false, false});
+  MainWindow w(doc, builtinRegistry(), MainWindowOptions{false, false});
   showAndWait(w);
   ASSERT_TRUE(openAndWait(w, qpath(writeOpenCylinderStl(dir.path()))));
   ASSERT_TRUE(planAndWait(w));
@@ -200,7 +202,7 @@ TEST(Placement, LevelBaseCutsASlantBaseLevelAndThePartThenPlans)
 {
   TempDir dir;
   Document doc;
-  MainWindow w(doc, MainWindowOptions{false, false});
+  MainWindow w(doc, builtinRegistry(), MainWindowOptions{false, false});
   showAndWait(w);
   TriangleMesh tube = makeOpenCylinder(30.0, 60.0, 120, 30);
   for (Vec3& v : tube.vertices) {
@@ -261,7 +263,7 @@ TEST(Placement, ATiltedPartStandsUprightInTheCell)
   auto run = [&](const char* file, const Transform& turn) {
     Run out;
     Document doc;
-    MainWindow w(doc, MainWindowOptions{false, false});
+    MainWindow w(doc, builtinRegistry(), MainWindowOptions{false, false});
     showAndWait(w);
     EXPECT_TRUE(openAndWait(w, qpath(dir.path() / file)));
     doc.setPartPlacement(turn);

@@ -19,18 +19,20 @@
 #include <QToolButton>
 
 #include <gtest/gtest.h>
+
 #include <vtkCamera.h>
 #include <vtkRenderer.h>
 #include <nlohmann/json.hpp>
+#include "builtin_plugins.h"
 
 #include "spira/document/document.h"
 #include "spira/mesh/mesh_primitives.h"
+#include "spira/pipeline/document_plan.h"
 #include "spira/ui/log_panel.h"
 #include "spira/ui/main_window.h"
 #include "spira/ui/param_field.h"
 #include "spira/ui/param_panel.h"
 #include "spira/ui/path_inspector.h"
-#include "spira/pipeline/document_plan.h"
 #include "spira/ui/plan_panel.h"
 #include "spira/ui/point_selection.h"
 #include "spira/ui/scene_view.h"
@@ -64,7 +66,7 @@ QString lastLog(MainWindow& w)
 TEST(PlanCancel, CancelReturnsAtOnceAndKeepsThePreviousResults)
 {
   Document doc;
-  MainWindow w(doc, MainWindowOptions{false, false});
+  MainWindow w(doc, builtinRegistry(), MainWindowOptions{false, false});
   showAndWait(w);
   // A fine hemisphere: planning it takes seconds, most of it in sparse factorisations.
   setPart(doc, makeHemisphere(80.0, 720, 240), "large dome");
@@ -182,7 +184,7 @@ TEST(PlanCancel, CancelReturnsAtOnceAndKeepsThePreviousResults)
 TEST(PlanCancel, ContradictorySettingsFailWithTheHintAndInfeasiblePlansAreFlagged)
 {
   Document doc;
-  MainWindow w(doc, MainWindowOptions{false, false});
+  MainWindow w(doc, builtinRegistry(), MainWindowOptions{false, false});
   showAndWait(w);
   // No part: the Plan action says what to do.
   ASSERT_TRUE(planAndWait(w));

@@ -38,7 +38,7 @@ class PlanSettingsPanel : public ::testing::Test {
  protected:
   void SetUp() override
   {
-    window_ = std::make_unique<MainWindow>(doc_, MainWindowOptions{false, false});
+    window_ = std::make_unique<MainWindow>(doc_, builtinRegistry(), MainWindowOptions{false, false});
     showAndWait(*window_);
     panel_ = window_->planPanel();
   }

@@ -17,11 +17,13 @@
 #include <QSlider>
 
 #include <gtest/gtest.h>
+
 #include <vtkActor.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataMapper.h>
 #include <vtkTable.h>
 #include <nlohmann/json.hpp>
+#include "builtin_plugins.h"
 
 #include "spira/base/units.h"
 #include "spira/document/document.h"
@@ -77,7 +79,7 @@ std::pair<double, double> channelRange(const Trajectory& t, double (*get)(const 
 TEST(PlanningWorkflow, DomeFromImportToProcessChart)
 {
   Document doc;
-  MainWindow w(doc, MainWindowOptions{false, false});
+  MainWindow w(doc, builtinRegistry(), MainWindowOptions{false, false});
   showAndWait(w);
   ui::SceneView* view = w.sceneView();
   ui::DisplayPanel* display = w.displayPanel();
@@ -271,7 +273,7 @@ TEST(PlanningWorkflow, DomeFromImportToProcessChart)
 TEST(PlanningWorkflow, ThinWalledSolidVerdictSaysItIsPlannedOnItsMidSurface)
 {
   Document doc;
-  MainWindow w(doc, MainWindowOptions{false, false});
+  MainWindow w(doc, builtinRegistry(), MainWindowOptions{false, false});
   showAndWait(w);
   ASSERT_TRUE(openAndWait(w, qpath(sourceDir() / "tests" / "data" / "real" / "tube_straight_solid.stl")));
   ASSERT_TRUE(planAndWait(w));

@@ -6,12 +6,14 @@
 #include <QAction>
 
 #include <gtest/gtest.h>
+
 #include <vtkActor.h>
 #include <vtkActorCollection.h>
 #include <vtkCamera.h>
 #include <vtkPolyData.h>
 #include <vtkProperty.h>
 #include <vtkRenderer.h>
+#include "builtin_plugins.h"
 
 #include "spira/document/document.h"
 #include "spira/mesh/mesh_primitives.h"
@@ -54,7 +56,7 @@ class SceneViewTest : public ::testing::Test {
  protected:
   void SetUp() override
   {
-    window_ = std::make_unique<MainWindow>(doc_, MainWindowOptions{false, false});
+    window_ = std::make_unique<MainWindow>(doc_, builtinRegistry(), MainWindowOptions{false, false});
     showAndWait(*window_);
     Part part;
     part.name = "cone";

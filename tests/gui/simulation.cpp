@@ -17,6 +17,7 @@
 #include <QSlider>
 
 #include <gtest/gtest.h>
+
 #include <vtkActor.h>
 #include <vtkCamera.h>
 #include <vtkMatrix4x4.h>
@@ -25,6 +26,7 @@
 #include <vtkPolyDataMapper.h>
 #include <vtkRenderer.h>
 #include <nlohmann/json.hpp>
+#include "builtin_plugins.h"
 
 #include "spira/base/units.h"
 #include "spira/document/document.h"
@@ -73,7 +75,7 @@ Transform actorMatrix(vtkActor* actor)
 TEST(Simulation, DomeOnTheFanucPositionerCell)
 {
   Document doc;
-  MainWindow w(doc, MainWindowOptions{false, false});
+  MainWindow w(doc, builtinRegistry(), MainWindowOptions{false, false});
   showAndWait(w);
   ASSERT_TRUE(openAndWait(w, qpath(sourceDir() / "resources" / "samples" / "dome.stl")));
   ui::CellWorkspace* cells = w.cellWorkspace();

@@ -7,6 +7,8 @@
 
 #include <gtest/gtest.h>
 
+#include "builtin_plugins.h"
+
 #include "spira/document/document.h"
 #include "spira/ui/log_panel.h"
 #include "spira/ui/main_window.h"
@@ -23,7 +25,7 @@ using spira::ui::MainWindowOptions;
 TEST(WindowBehaviour, KeyboardShortcutsImportUndoRedoAndFit)
 {
   Document doc;
-  MainWindow w(doc, MainWindowOptions{false, false});
+  MainWindow w(doc, builtinRegistry(), MainWindowOptions{false, false});
   const ui::Actions& a = w.actions();
   EXPECT_EQ(a.importPart->shortcut(), QKeySequence("Ctrl+I"));
   EXPECT_EQ(a.openProject->shortcut(), QKeySequence("Ctrl+O"));
@@ -55,7 +57,7 @@ TEST(WindowBehaviour, CancelledImportLeavesTheDocumentUnchanged)
   TempDir dir;
   const QString stl = qpath(writeOpenCylinderStl(dir.path()));
   Document doc;
-  MainWindow w(doc, MainWindowOptions{false, false});
+  MainWindow w(doc, builtinRegistry(), MainWindowOptions{false, false});
   showAndWait(w);
   const auto revision = doc.revision();
   QSignalSpy opened(&w, &MainWindow::fileOpened);
@@ -78,7 +80,7 @@ TEST(WindowBehaviour, LayoutIsRestoredInTheNextSession)
 {
   {
     Document doc;
-    MainWindow w(doc);
+    MainWindow w(doc, builtinRegistry());
     showAndWait(w);
     w.resize(1100, 700);
     w.findChild<QDockWidget*>("messagesDock")->hide();
@@ -86,7 +88,7 @@ TEST(WindowBehaviour, LayoutIsRestoredInTheNextSession)
     w.close();
   }
   Document doc;
-  MainWindow w(doc);
+  MainWindow w(doc, builtinRegistry());
   w.show();
   ASSERT_TRUE(QTest::qWaitForWindowExposed(&w));
   EXPECT_EQ(w.size(), QSize(1100, 700));
@@ -99,7 +101,7 @@ TEST(WindowBehaviour, TitleNamesTheFileAndMarksUnsavedChanges)
 {
   TempDir dir;
   Document doc;
-  MainWindow w(doc, MainWindowOptions{false, false});
+  MainWindow w(doc, builtinRegistry(), MainWindowOptions{false, false});
   EXPECT_EQ(w.windowTitle(), "Untitled[*]");
   EXPECT_FALSE(w.isWindowModified());
   Part part;
@@ -115,7 +117,7 @@ TEST(WindowBehaviour, TitleNamesTheFileAndMarksUnsavedChanges)
   EXPECT_TRUE(w.isWindowModified());
   // Not interactive: saving without a file name does not ask, and fails.
   Document other;
-  MainWindow w2(other, MainWindowOptions{false, false});
+  MainWindow w2(other, builtinRegistry(), MainWindowOptions{false, false});
   EXPECT_FALSE(w2.saveProject());
 }
 

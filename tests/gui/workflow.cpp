@@ -20,11 +20,13 @@
 
 #include <QVTKOpenGLNativeWidget.h>
 #include <gtest/gtest.h>
+
 #include <vtkCamera.h>
 #include <vtkPolyDataMapper.h>
 #include <vtkRenderer.h>
 #include <vtkTable.h>
 #include <vtkVariant.h>
+#include "builtin_plugins.h"
 
 #include "spira/base/units.h"
 #include "spira/document/cell_file.h"
@@ -103,7 +105,7 @@ TEST(Workflow, DomeWithFanucCellFromImportToExport)
 {
   TempDir dir;
   Document doc;
-  MainWindow w(doc, MainWindowOptions{false, false});
+  MainWindow w(doc, builtinRegistry(), MainWindowOptions{false, false});
   showAndWait(w);
   ui::SceneView* view = w.sceneView();
   ui::DisplayPanel* display = w.displayPanel();

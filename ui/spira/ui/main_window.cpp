@@ -18,7 +18,6 @@
 #include <vtkPolyData.h>
 #include <vtkVersion.h>
 
-#include "builtin_plugins.h"
 #include "spira/base/version.h"
 #include "spira/ui/application.h"
 #include "spira/ui/cell_workspace.h"
@@ -50,8 +49,9 @@ const char* const kBoundingBoxKey = "view/showBoundingBox";
 
 }  // namespace
 
-MainWindow::MainWindow(Document& doc, MainWindowOptions options, QWidget* parent)
-    : QMainWindow(parent), doc_(doc), options_(options)
+MainWindow::MainWindow(Document& doc, const PluginRegistry& registry, MainWindowOptions options,
+                       QWidget* parent)
+    : QMainWindow(parent), doc_(doc), registry_(registry), options_(options)
 {
   initResources();
   setObjectName("mainWindow");
@@ -112,7 +112,7 @@ MainWindow::MainWindow(Document& doc, MainWindowOptions options, QWidget* parent
     });
   });
 
-  planPanel_ = new PlanPanel(doc_, builtinRegistry(), this);
+  planPanel_ = new PlanPanel(doc_, registry_, this);
   addDockWidget(Qt::RightDockWidgetArea, planPanel_);
   display_ = new DisplayPanel(view_, chart_, chartToggle, this);
   addDockWidget(Qt::LeftDockWidgetArea, display_);

@@ -17,6 +17,7 @@ class vtkPolyData;
 
 namespace spira {
 struct DocumentPlan;
+class PluginRegistry;
 }  // namespace spira
 
 namespace spira::ui {
@@ -53,7 +54,9 @@ class MainWindow : public QMainWindow {
   Q_OBJECT
 
  public:
-  explicit MainWindow(Document& doc, MainWindowOptions options = {}, QWidget* parent = nullptr);
+  // `registry` (the plugins: importers, decomposers, exporters) must outlive the window.
+  MainWindow(Document& doc, const PluginRegistry& registry, MainWindowOptions options = {},
+             QWidget* parent = nullptr);
   ~MainWindow() override;
 
   // Opens a project (.spira) or imports a part (any importer extension). Imports run on a worker
@@ -138,6 +141,7 @@ class MainWindow : public QMainWindow {
   void rememberDirectory(const QString& file);
 
   Document& doc_;
+  const PluginRegistry& registry_;
   MainWindowOptions options_;
   Document::SubscriptionId subscription_ = 0;
   SceneView* view_ = nullptr;

@@ -13,7 +13,6 @@
 
 #include <vtkPolyData.h>
 
-#include "builtin_plugins.h"
 #include "spira/base/error.h"
 #include "spira/document/project_file.h"
 #include "spira/io/import_service.h"
@@ -96,7 +95,7 @@ void MainWindow::importPartFile(const QString& path)
     emit fileOpened(path, false);
     return;
   }
-  const PluginRegistry& registry = builtinRegistry();
+  const PluginRegistry& registry = registry_;
   auto result = std::make_shared<ImportedPart>();
   auto shaded = std::make_shared<vtkSmartPointer<vtkPolyData>>();
   const std::filesystem::path file = toPath(path);
@@ -211,7 +210,7 @@ bool MainWindow::saveProjectAs(const QString& requested)
 void MainWindow::chooseImport()
 {
   QStringList patterns;
-  for (const std::string& ext : builtinRegistry().importExtensions()) patterns << "*." + fromStd(ext);
+  for (const std::string& ext : registry_.importExtensions()) patterns << "*." + fromStd(ext);
   QStringList filters;
   if (!patterns.isEmpty()) filters << tr("Part meshes (%1)").arg(patterns.join(' '));
   filters << tr("All files (*)");

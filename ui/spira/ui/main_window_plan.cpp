@@ -3,7 +3,6 @@
 #include <QDockWidget>
 #include <QLocale>
 
-#include "builtin_plugins.h"
 #include "spira/pipeline/document_plan.h"
 #include "spira/plugin/strategy_name.h"
 #include "spira/ui/display_panel.h"
@@ -58,10 +57,11 @@ void MainWindow::plan()
   actions_.plan->setEnabled(false);
   actions_.cancelPlan->setEnabled(true);
   planPanel_->progress()->start();
+  const PluginRegistry& registry = registry_;  // outlives the window, and so the worker
   tasks_->start(
       tr("Planning %1").arg(fromStd(snapshot->part->name)),
-      [snapshot, result](Progress& progress) {
-        *result = planDocument(*snapshot, builtinRegistry(), progress);
+      [snapshot, result, &registry](Progress& progress) {
+        *result = planDocument(*snapshot, registry, progress);
       },
       [this, snapshot, result](const TaskOutcome& outcome) { finishPlan(outcome, *snapshot, *result); },
       TaskRunner::Display::Signals);

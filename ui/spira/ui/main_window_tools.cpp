@@ -1,5 +1,4 @@
 // MainWindow: the tool windows opened from the menus (robot-program export, strategy comparison).
-#include "builtin_plugins.h"
 #include "spira/ui/compare_view.h"
 #include "spira/ui/export_dialog.h"
 #include "spira/ui/main_window.h"
@@ -8,7 +7,7 @@ namespace spira::ui {
 
 ExportDialog* MainWindow::exportDialog()
 {
-  if (!exportDialog_) exportDialog_ = new ExportDialog(doc_, builtinRegistry(), log_, this);
+  if (!exportDialog_) exportDialog_ = new ExportDialog(doc_, registry_, log_, this);
   return exportDialog_;
 }
 
@@ -22,7 +21,7 @@ void MainWindow::showExportDialog()
 
 CompareView* MainWindow::compareView()
 {
-  if (!compareView_) compareView_ = new CompareView(doc_, builtinRegistry(), this);
+  if (!compareView_) compareView_ = new CompareView(doc_, registry_, this);
   return compareView_;
 }
 

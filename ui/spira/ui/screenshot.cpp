@@ -40,7 +40,7 @@ void waitForExposure(QWidget& w)
 
 }  // namespace
 
-int takeScreenshot(const ScreenshotRequest& request, QTextStream& err)
+int takeScreenshot(const ScreenshotRequest& request, const PluginRegistry& registry, QTextStream& err)
 {
   const QFileInfo input(request.input);
   if (!input.exists() || !input.isFile()) {
@@ -57,7 +57,7 @@ int takeScreenshot(const ScreenshotRequest& request, QTextStream& err)
   }
 
   Document doc;
-  MainWindow window(doc, MainWindowOptions{false, false});
+  MainWindow window(doc, registry, MainWindowOptions{false, false});
   window.resize(request.size);
   window.show();
   waitForExposure(window);

@@ -7,6 +7,10 @@
 
 class QTextStream;
 
+namespace spira {
+class PluginRegistry;
+}  // namespace spira
+
 namespace spira::ui {
 
 struct ScreenshotRequest {
@@ -19,6 +23,6 @@ struct ScreenshotRequest {
 // The `spira --screenshot` command: opens `input` in a fresh main window (default layout, no
 // prompts), plans it when asked, renders it and writes the whole window to `output`. Needs a QApplication.
 // Errors are written to `err` as "spira: message" and "hint: ..."; returns an ExitCode.
-int takeScreenshot(const ScreenshotRequest& request, QTextStream& err);
+int takeScreenshot(const ScreenshotRequest& request, const PluginRegistry& registry, QTextStream& err);
 
 }  // namespace spira::ui
