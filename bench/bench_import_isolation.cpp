@@ -148,7 +148,7 @@ int main(int argc, char** argv)
                     }));
     helper = std::min(helper, timed([&] {
                         for (const fs::path& l : links)
-                          spira::readIsolated("import.link_mesh", l, spira::ParamSet{}, progress);
+                          spira::readIsolated("import.link_mesh", l, spira::ParamSet{}, progress, "");
                       }));
   }
   std::printf(

@@ -147,6 +147,8 @@ nlohmann::json axesJson(const std::vector<CellAxis>& axes)
   return arr;
 }
 
+}  // namespace
+
 std::string relativeTo(const std::string& file, const std::filesystem::path& baseDir)
 {
   const std::filesystem::path p(file);
@@ -154,8 +156,6 @@ std::string relativeTo(const std::string& file, const std::filesystem::path& bas
   const std::filesystem::path rel = p.lexically_relative(baseDir);
   return rel.empty() ? file : rel.generic_string();
 }
-
-}  // namespace
 
 CellRecord cellFromText(const std::string& text, const std::filesystem::path& baseDir,
                         const std::string& what)

@@ -27,4 +27,7 @@ CellRecord cellFromText(const std::string& text, const std::filesystem::path& ba
 // The .cell text of a record; URDF paths are written relative to `baseDir` when they lie under it.
 std::string cellFileText(const CellRecord& cell, const std::filesystem::path& baseDir);
 
+// `file` relative to `baseDir` when it is absolute; else, or when `baseDir` is empty, unchanged.
+std::string relativeTo(const std::string& file, const std::filesystem::path& baseDir);
+
 }  // namespace spira

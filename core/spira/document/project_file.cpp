@@ -7,6 +7,7 @@
 #include "spira/base/atomic_file.h"
 #include "spira/base/error.h"
 #include "spira/base/version.h"
+#include "spira/document/cell_file.h"
 #include "spira/document/json_codec.h"
 #include "spira/document/json_read.h"
 
@@ -48,18 +49,13 @@ std::uint64_t getLe(std::string_view in, std::size_t offset, int bytes)
 // moved alone through the absolute ones.
 constexpr const char* kRelativePaths = "relative_paths";
 
-std::string relativePath(const std::string& file, const std::filesystem::path& dir)
-{
-  const std::filesystem::path p(file);
-  if (file.empty() || !p.is_absolute()) return {};
-  return p.lexically_relative(dir).generic_string();
-}
-
 nlohmann::json relativePaths(const CellRecord& c, const std::filesystem::path& dir)
 {
   nlohmann::json j = nlohmann::json::object();
-  if (const std::string r = relativePath(c.robotUrdf, dir); !r.empty()) j["robot_urdf"] = r;
-  if (const std::string r = relativePath(c.positionerUrdf, dir); !r.empty()) j["positioner_urdf"] = r;
+  // Only paths that relativeTo changes: a relative path already is one, an empty one names no file.
+  if (const std::string r = relativeTo(c.robotUrdf, dir); r != c.robotUrdf) j["robot_urdf"] = r;
+  if (const std::string r = relativeTo(c.positionerUrdf, dir); r != c.positionerUrdf)
+    j["positioner_urdf"] = r;
   return j;
 }
 

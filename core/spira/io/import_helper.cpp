@@ -134,11 +134,7 @@ std::pair<int, size_t> awaitChild(int socket, pid_t pid, int pidfd)
       break;
     }
   }
-  int status = 0;
-  struct rusage usage {};
-  while (::wait4(pid, &status, 0, &usage) < 0 && errno == EINTR) {
-  }
-  return {status, static_cast<size_t>(usage.ru_maxrss) * 1024};
+  return import_process::reap(pid);
 }
 
 // One request at a time (the client holds the server while its import runs); ends when the client

@@ -72,15 +72,6 @@ pid_t spawn(const std::vector<std::string>& args, const int (&fds)[4])
   return pid;
 }
 
-std::pair<int, size_t> reap(pid_t pid)
-{
-  int status = 0;
-  struct rusage usage {};
-  while (::wait4(pid, &status, 0, &usage) < 0 && errno == EINTR) {
-  }
-  return {status, static_cast<size_t>(usage.ru_maxrss) * 1024};
-}
-
 // A helper started for one import: `spira-import IMPORTER FILE PARAMS MEMORY CPU`.
 class SpawnedHelper final : public Helper {
  public:
@@ -256,6 +247,15 @@ void Pipe::closeWrite()
 {
   if (write >= 0) ::close(write);
   write = -1;
+}
+
+std::pair<int, size_t> reap(pid_t pid)
+{
+  int status = 0;
+  struct rusage usage {};
+  while (::wait4(pid, &status, 0, &usage) < 0 && errno == EINTR) {
+  }
+  return {status, static_cast<size_t>(usage.ru_maxrss) * 1024};
 }
 
 std::unique_ptr<Helper> start(const Request& request, const Pipe& result, const Pipe& log)

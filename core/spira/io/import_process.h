@@ -43,6 +43,9 @@ class Helper {
   virtual std::pair<int, size_t> wait() = 0;
 };
 
+// Waits for child `pid` to end: its wait status and peak resident memory (bytes).
+std::pair<int, size_t> reap(pid_t pid);
+
 // Starts `request` with its result on `result.write` and its messages on `log.write`.
 std::unique_ptr<Helper> start(const Request& request, const Pipe& result, const Pipe& log);
 

@@ -86,13 +86,6 @@ std::vector<std::string> logLines(const std::string& log)
   return lines;
 }
 
-// What the user can do about a file the helper could not read.
-std::string reexportHint(const std::string& importerId)
-{
-  return importerId == "import.link_mesh" ? "re-export it as STL or COLLADA from the robot's support package"
-                                          : "re-export it from the CAD program";
-}
-
 [[noreturn]] void rethrow(const wire::RemoteError& e, const std::string& source, const ImportLimits& limits,
                           const std::string& reexport)
 {
@@ -187,16 +180,16 @@ fs::path importHelperPath()
 ImportedMesh readIsolated(const ImporterPlugin& importer, const fs::path& file, const ParamSet& params,
                           Progress& progress)
 {
-  return readIsolated(importer.id(), file, params, progress);
+  return readIsolated(importer.id(), file, params, progress,
+                      "re-export the part from the CAD program (for STEP choose AP214 or AP242)");
 }
 
 ImportedMesh readIsolated(const std::string& importerId, const fs::path& file, const ParamSet& params,
-                          Progress& progress)
+                          Progress& progress, const std::string& reexport)
 {
   progress.checkCancel();
   const ImportLimits limits = ImportLimits::fromEnvironment();
   const std::string source = file.filename().string();
-  const std::string reexport = reexportHint(importerId);
   const auto cpuSeconds =
       static_cast<long>(limits.wallSeconds * std::max(1u, std::thread::hardware_concurrency())) + 10;
   import_process::Pipe result, log;
@@ -245,11 +238,7 @@ ImportedMesh readIsolated(const std::string& importerId, const fs::path& file, c
       rethrow({wire::ErrorKind::Memory, {}, {}}, source, limits, reexport);
     if (WIFSIGNALED(status) && WTERMSIG(status) == SIGXCPU)
       throw timeLimit(source, cpuSeconds, "processor time", reexport);
-    throw stoppedWithoutResult(
-        what, source, status, lines,
-        importerId == "import.link_mesh"
-            ? reexport
-            : "re-export the part from the CAD program; for STEP choose AP214 or AP242");
+    throw stoppedWithoutResult(what, source, status, lines, reexport);
   }
   if (reader.error()) rethrow(*reader.error(), source, limits, reexport);
   ImportedMesh mesh = std::move(*reader.mesh());

@@ -23,9 +23,10 @@ struct ImportLimits {
 // helper's own messages come back as warnings. Cancelling `progress` kills the helper.
 ImportedMesh readIsolated(const ImporterPlugin& importer, const std::filesystem::path& file,
                           const ParamSet& params, Progress& progress);
-// The same for an importer only the helper has (robot link meshes through Assimp).
+// The same for an importer only the helper has (robot link meshes through Assimp); `reexport`
+// tells the user how to get a readable file when the reader crashes or exceeds its limits.
 ImportedMesh readIsolated(const std::string& importerId, const std::filesystem::path& file,
-                          const ParamSet& params, Progress& progress);
+                          const ParamSet& params, Progress& progress, const std::string& reexport);
 
 // Starts the helper's warm server in the background, so that the first import of a session does
 // not wait for it to load OpenCASCADE (see import_process.h). Imports start it anyway.

@@ -19,7 +19,9 @@ constexpr double kMetre = 1000.0;  // ROS mesh files are in metres (COLLADA afte
 TriangleMesh readInHelper(const std::filesystem::path& file)
 {
   NullProgress progress;
-  return readIsolated("import.link_mesh", file, ParamSet{}, progress).mesh;
+  return readIsolated("import.link_mesh", file, ParamSet{}, progress,
+                      "re-export it as STL or COLLADA from the robot's support package")
+      .mesh;
 }
 
 }  // namespace
