@@ -85,11 +85,7 @@ ExportSource projectSource(const fs::path& file)
                           : file.stem().string();
   if (doc.part()) s.placement = doc.part()->T_world_part;
   // The stage reports carry the plan's key figures (revolutions, heights, length) for the header.
-  nlohmann::json merged = nlohmann::json::object();
-  for (Stage stage : {Stage::Spiral, Stage::Process, Stage::Kinematics})
-    if (const auto& r = doc.results().report(stage); r && r->is_object())
-      for (const auto& [key, value] : r->items()) merged[key] = value;
-  s.report = summarisePlanReport(merged, file.string() + " (the plan's report)");
+  s.report = summarisePlanReport(mergedPlanReport(doc.results()), file.string() + " (the plan's report)");
   if (doc.settings()) s.settings = *doc.settings();
   return s;
 }

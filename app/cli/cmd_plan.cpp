@@ -15,8 +15,8 @@
 #include "spira/document/cell_file.h"
 #include "spira/document/project_file.h"
 #include "spira/io/isolated_import.h"
+#include "spira/pipeline/document_plan.h"
 #include "spira/pipeline/export_job.h"
-#include "spira/pipeline/plan_motion.h"
 #include "spira/pipeline/prep_schema.h"
 #include "spira/planning/joints_csv.h"
 #include "spira/planning/plan_advice.h"
@@ -47,12 +47,25 @@ struct PlanFlags {
   }
 };
 
-void printSummary(const PlanOutput& plan, std::ostream& out)
+// The part as a document holds it: placed (the mesh moved or cut), standing on the plate.
+std::shared_ptr<const Part> partOf(ImportedPart imported, const std::string& file, int lowerLoop)
 {
+  auto part = std::make_shared<Part>();
+  part->name = fs::path(file).stem().string();
+  part->sourcePath = file;
+  part->sourceUnit = imported.sourceUnit;
+  part->mesh = std::make_shared<const TriangleMesh>(std::move(imported.mesh));
+  part->lowerBoundaryOverride = lowerLoop;
+  return part;
+}
+
+void printSummary(const DocumentPlan& done, std::ostream& out)
+{
+  const PlanOutput& plan = done.output;
   const SpiralReport& s = plan.spiral.report;
   out << std::fixed << std::setprecision(3);
   const char* kind = plan.topology.partClass == PartClass::Open ? "open" : "closed";
-  out << (plan.branching ? "multi-branch" : kind) << " part, " << plan.generatrices.lines.size()
+  out << (plan.branching ? "multi-branch" : kind) << " part, " << done.results.generatrices->lines.size()
       << " generatrices of " << s.generatrixLengthMin << " .. " << s.generatrixLengthMax << " mm\n";
   if (plan.paths.size() > 1)
     out << plan.paths.size() << " sub-paths (trunk first), one arc start and stop each, split at "
@@ -148,73 +161,54 @@ int cmdPlan(const std::vector<std::string>& argv)
 
   ensureWritableDirectory(outDir);
   // Everything the user named is read before the (long) planning starts.
-  const std::optional<RobotCell> cell =
-      cellFile.empty() ? std::nullopt : std::optional<RobotCell>(RobotCell(readCellFile(cellFile)));
-  if (cell && !cell->canSolve()) throw InputError(cell->ikRefusal(), "choose a cell with a 6-axis arm");
-  // The robot's link meshes are read in the import helper after planning: it loads meanwhile.
-  if (cell) prestartImportHelper();
+  DocumentState snapshot;
+  if (!cellFile.empty()) {
+    auto record = std::make_shared<const CellRecord>(readCellFile(cellFile));
+    if (const RobotCell cell(*record); !cell.canSolve())
+      throw InputError(cell.ikRefusal(), "choose a cell with a 6-axis arm");
+    snapshot.cell = std::move(record);
+    // The robot's link meshes are read in the import helper after planning: it loads meanwhile.
+    prestartImportHelper();
+  }
   const PrepParams prep = prepParamsFrom(prepValues);
 
   const auto t0 = std::chrono::steady_clock::now();
   NullProgress progress;
-  ImportedPart part = importFlags.import(positional[0], progress);
-  for (const auto& w : part.warnings) std::cerr << "warning: " << w << "\n";
-  const PlacementChange placed = placement.apply(part);
+  ImportedPart imported = importFlags.import(positional[0], progress);
+  for (const auto& w : imported.warnings) std::cerr << "warning: " << w << "\n";
+  const PlacementChange placed = placement.apply(imported);
   std::cout << placed.text(placement.substrateZ);
   const double importSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  snapshot.part = partOf(std::move(imported), positional[0], placement.lowerLoop);
+  Substrate plate;
+  plate.planeZ = placement.substrateZ;
+  snapshot.substrate = std::make_shared<const Substrate>(std::move(plate));
+  snapshot.settings = std::make_shared<const PlanSettings>(
+      PlanSettings{decomposerIdOf(strategy), PlanSettings::kDefaultClosureFinder, planFlags.values});
 
-  PlanRequest req{part.mesh, part.report};
-  req.decomposerId = decomposerIdOf(strategy);
-  req.lowerLoopOverride = placement.lowerLoop;
-  req.substrateZ = placement.substrateZ;
-  req.params = planFlags.values;
-  req.midSurfaceOfSolid = !noMidSurface;
-  PlanOutput plan = planOrAdvise(registry, req, progress);
-  if (plan.solid) std::cout << plan.solid->summary() << "\n";
-  plan.timings.insert(plan.timings.begin(), {"import", importSeconds});
-
-  nlohmann::json report = planReportJson(plan, strategy);
+  PlanDocumentOptions options;
+  options.midSurfaceOfSolid = !noMidSurface;
+  options.resolveCollisions = !keepCollisions;
+  DocumentPlan plan = planDocument(snapshot, registry, progress, options);
+  if (plan.output.solid) std::cout << plan.output.solid->summary() << "\n";
+  nlohmann::json& report = plan.report;
   report["dropped_mm"] = placed.dropped;
   if (placed.levelled) report["levelled_base"] = {{"cut_z_mm", placed.cutZ}, {"removed_mm", placed.removed}};
-  std::optional<PlanAdvice> advice;
-  if (!plan.feasible()) {
-    std::cout << "INFEASIBLE: " << plan.deposits.summary() << "\nlooking for a change that plans it...\n";
-    advice = adviseChange(registry, req, &plan, progress);
-    report["advice"] = {{"found", advice->found},
-                        {"change", advice->change},
-                        {"flags", advice->flags},
-                        {"tried", advice->tried},
-                        {"cause", advice->cause}};
-  }
-  bool ok = plan.feasible();
-  std::optional<PlanMotion> motion;
-  if (cell) {
-    const auto tm = std::chrono::steady_clock::now();
-    MotionSettings ms = motionSettingsFrom(planFlags.values["process"], planFlags.values["spiral"]);
-    ms.substrateZ = req.substrateZ;
-    ms.resolveCollisions = !keepCollisions;
-    ms.part = &part.mesh;
-    motion = solvePlanMotion(*cell, plan.spiral.trajectory, ms, progress);
-    plan.timings.push_back(
-        {"kinematics", std::chrono::duration<double>(std::chrono::steady_clock::now() - tm).count()});
-    for (const auto& [key, value] : motion->report.items()) report[key] = value;
-    report["cell_file"] = std::filesystem::absolute(cellFile).lexically_normal().string();
-    ok = ok && motion->ok();
-  }
-  report["timings_s"] = nlohmann::json::object();
-  for (const auto& [stage, seconds] : plan.timings) report["timings_s"][stage] = seconds;
+  if (snapshot.cell) report["cell_file"] = std::filesystem::absolute(cellFile).lexically_normal().string();
+  report["timings_s"]["import"] = importSeconds;
 
-  const Trajectory& finalPath = motion ? motion->trajectory : plan.spiral.trajectory;
+  const Results& r = plan.results;
+  const Trajectory& finalPath = r.kinematics ? r.kinematics->path : *r.process;
   std::vector<OutputFile> planFiles{{"trajectory.csv", trajectoryCsv(finalPath)}};
-  if (motion) planFiles.push_back({"joints.csv", jointsCsv(motion->joints)});
+  if (r.kinematics) planFiles.push_back({"joints.csv", jointsCsv(r.kinematics->joints)});
   planFiles.push_back({"report.json", report.dump(2) + "\n"});
   replaceOutputSet(outDir, OutputKind::Plan, planFiles);
   printSummary(plan, std::cout);
-  if (advice) std::cout << "advice: " << advice->text() << "\n";
-  if (motion) printMotionSummary(motion->report, std::cout);
+  if (plan.advice) std::cout << "advice: " << plan.advice->text() << "\n";
+  if (r.kinematics) printMotionSummary(report, std::cout);
 
   const bool forced = exporterValues.has("force") && exporterValues.getBool("force");
-  if (exporter && !plan.feasible() && !forced) {
+  if (exporter && !plan.feasible && !forced) {
     std::cout << "the robot program was not written: the deposit check rejects the path (add --force to "
                  "write it anyway, each rejected point then carries a warning comment)\n";
   } else if (exporter) {
@@ -222,20 +216,22 @@ int cmdPlan(const std::vector<std::string>& argv)
     job.exporterId = exporter->id();
     job.exporterParams = exporterValues;
     job.prep = prep;
+    const std::optional<RobotCell> cell =
+        snapshot.cell ? std::optional<RobotCell>(RobotCell(*snapshot.cell)) : std::nullopt;
     job.cell = cell ? &*cell : nullptr;
-    if (motion)  // unresolved collisions of the plan are flagged in the program (refused unless forced)
-      for (const JointPoint& p : motion->joints.points) job.plannedCollision.push_back(p.collision);
+    if (r.kinematics)  // unresolved collisions of the plan are flagged in the program (refused unless forced)
+      for (const JointPoint& p : r.kinematics->joints.points) job.plannedCollision.push_back(p.collision);
     job.header = programHeader(positional[0], cellFile, summarisePlanReport(report, "the plan's report"));
     const ExportOutcome exported = exportTrajectory(registry, finalPath, job, outDir, progress);
     printExportSummary(exported, std::cout);
-    plan.timings.push_back({"export", exported.seconds});
+    report["timings_s"]["export"] = exported.seconds;
   }
   if (timing)
-    for (const auto& [stage, seconds] : plan.timings)
-      std::cout << "timing " << stage << ": " << seconds << " s\n";
-  std::cout << "wrote " << outDir << "/trajectory.csv" << (motion ? ", joints.csv" : "")
+    for (const auto& [stage, seconds] : report["timings_s"].items())
+      std::cout << "timing " << stage << ": " << seconds.get<double>() << " s\n";
+  std::cout << "wrote " << outDir << "/trajectory.csv" << (r.kinematics ? ", joints.csv" : "")
             << " and report.json\n";
-  return ok ? kExitOk : kExitInfeasible;
+  return plan.feasible && plan.motionOk ? kExitOk : kExitInfeasible;
 }
 
 }  // namespace spira::cli

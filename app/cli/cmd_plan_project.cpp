@@ -20,21 +20,14 @@ namespace fs = std::filesystem;
 namespace spira::cli {
 namespace {
 
-// The plan's report.json: the stage reports the project stores, in the keys of a part's plan
-// folder (the spiral's at the top, the process under "process", the cell's motion at the top).
+// The plan's report.json: a part's plan folder report with where the project's part and cell came from.
 nlohmann::json folderReport(const Document& doc, const fs::path& project, const DocumentPlan& plan)
 {
-  const Results& r = plan.results;
-  nlohmann::json report = r.report(Stage::Spiral) ? *r.report(Stage::Spiral) : nlohmann::json::object();
-  if (const auto& process = r.report(Stage::Process)) report["process"] = *process;
-  if (const auto& field = r.report(Stage::Field)) report["field"] = *field;
-  if (const auto& motion = r.report(Stage::Kinematics))
-    for (const auto& [key, value] : motion->items()) report[key] = value;
+  nlohmann::json report = plan.report;
   report["project"] = fs::absolute(project).lexically_normal().string();
   const Part& part = *doc.part();
   report["part"] = part.sourcePath.empty() ? part.name : part.sourcePath;
   if (doc.cell()) report["cell"] = doc.cell()->name;
-  report["feasible"] = plan.feasible;
   report["deposit_summary"] = plan.depositSummary;
   return report;
 }
@@ -72,7 +65,7 @@ int cmdPlanProject(Args args, const fs::path& project)
 
   std::cout << plan.summary << "\n";
   std::cout << (plan.feasible ? "feasible" : "INFEASIBLE") << ": " << plan.depositSummary << "\n";
-  if (!plan.advice.empty()) std::cout << "advice: " << plan.advice << "\n";
+  if (plan.advice) std::cout << "advice: " << plan.advice->text() << "\n";
   for (const std::string& w : plan.warnings) std::cout << "warning: " << w << "\n";
   std::cout << "wrote " << outDir << "/trajectory.csv" << (r.kinematics ? ", joints.csv" : "")
             << " and report.json\n";

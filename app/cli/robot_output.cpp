@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "cli_common.h"
+#include "spira/pipeline/program_header.h"
 
 namespace spira::cli {
 
@@ -46,18 +47,8 @@ const ExporterPlugin& exporterFor(const PluginRegistry& registry, const std::str
 std::map<std::string, std::string> programHeader(const std::string& partFile, const std::string& cellFile,
                                                  const PlanReportSummary& r)
 {
-  std::map<std::string, std::string> h;
-  h["part"] = std::filesystem::path(partFile).filename().string();
-  h["cell"] = cellFile.empty() ? "none (targets in the part frame)" : r.cell.empty() ? cellFile : r.cell;
-  const std::time_t now = programTime();
-  std::ostringstream date;
-  date << std::put_time(std::gmtime(&now), "%Y-%m-%d %H:%M UTC");
-  h["date"] = date.str();
-  std::ostringstream plan;
-  plan << std::setprecision(4) << r.partType << " part, " << r.revolutions << " revolutions, deposit "
-       << r.heightMin << " .. " << r.heightMax << " mm, path " << r.pathLength << " mm";
-  h["plan"] = plan.str();
-  return h;
+  const std::string cell = cellFile.empty() ? std::string() : r.cell.empty() ? cellFile : r.cell;
+  return spira::programHeader(std::filesystem::path(partFile).filename().string(), cell, r, programTime());
 }
 
 namespace {

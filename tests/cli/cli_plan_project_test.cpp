@@ -12,6 +12,7 @@
 #include "spira/document/cell_file.h"
 #include "spira/document/document.h"
 #include "spira/document/project_file.h"
+#include "spira/io/import_service.h"
 #include "spira/mesh/mesh_primitives.h"
 #include "spira/pipeline/document_plan.h"
 #include "spira/planning/joints_csv.h"
@@ -75,6 +76,44 @@ TEST(CliPlanProject, SameTrajectoryAsTheGuiPlanAndSaveStoresIt)
   const CliRun exported =
       runCli({"export", p.file.string(), "-o", (p.dir / "program").string(), "--format", "krl", "--force"});
   EXPECT_EQ(exported.exitCode, 0) << exported.err << exported.out;
+}
+
+// 'plan PART' with flags and 'plan PROJECT' holding that part with the same settings run one
+// pipeline: the same path, joints and report but for the keys that say where the inputs came from.
+TEST(CliPlanProject, PlanningThePartFileGivesThePlanOfTheProject)
+{
+  TempDir dir;
+  const fs::path stl = sourceDir() / "resources/samples/open_cylinder.stl";
+  const fs::path cell = sourceDir() / "resources/cells/fanuc_m20ia_positioner.cell";
+  NullProgress progress;
+  ImportedPart imported = importPart(builtinRegistry(), stl, nullptr, progress);
+  Document doc;
+  Part part;
+  part.name = "open_cylinder";
+  part.mesh = std::make_shared<const TriangleMesh>(std::move(imported.mesh));
+  doc.setPart(part);
+  doc.setCell(readCellFile(cell));
+  doc.setParam(PlanSettings::kSpiralSection, "h", ParamValue(1.9));
+  doc.setParam(doc.settings()->decomposerId, "points_per_rev", ParamValue(int64_t{120}));
+  doc.saveAs(dir / "cylinder.spira");
+
+  const CliRun fromProject =
+      runCli({"plan", (dir / "cylinder.spira").string(), "-o", (dir / "project").string()});
+  const CliRun fromPart = runCli({"plan", stl.string(), "--cell", cell.string(), "--h", "1.9",
+                                  "--points-per-rev", "120", "-o", (dir / "part").string()});
+  ASSERT_EQ(fromProject.exitCode, 0) << fromProject.err << fromProject.out;
+  ASSERT_EQ(fromPart.exitCode, 0) << fromPart.err << fromPart.out;
+  for (const char* file : {"trajectory.csv", "joints.csv"})
+    EXPECT_EQ(readBytes(dir / "project" / file), readBytes(dir / "part" / file)) << file;
+  nlohmann::json a = nlohmann::json::parse(readBytes(dir / "project" / "report.json"));
+  nlohmann::json b = nlohmann::json::parse(readBytes(dir / "part" / "report.json"));
+  for (const char* key : {"project", "part", "deposit_summary"}) EXPECT_EQ(a.erase(key), 1u) << key;
+  for (const char* key : {"cell_file", "dropped_mm"}) EXPECT_EQ(b.erase(key), 1u) << key;
+  for (nlohmann::json* j : {&a, &b})
+    for (const char* key : {"timings_s", "kinematics_timings_s", "seconds"})
+      EXPECT_EQ(j->erase(key), 1u) << key;
+  EXPECT_EQ(a, b);
+  EXPECT_EQ(a.at("n_points"), b.at("n_points"));
 }
 
 TEST(CliPlanProject, OptionsThatWouldOverrideTheProjectAreUsageErrors)

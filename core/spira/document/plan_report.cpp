@@ -1,7 +1,10 @@
 #include "spira/document/plan_report.h"
 
+#include <algorithm>
+
 #include "spira/base/error.h"
 #include "spira/document/json_read.h"
+#include "spira/document/results.h"
 
 namespace spira {
 namespace {
@@ -36,9 +39,70 @@ PlanReportSummary summarisePlanReport(const nlohmann::json& r, const std::string
     const nlohmann::json& check = r["deposit_check"];
     if (!check.is_object())
       throw InputError(what + ": 'deposit_check' should be an object, found " + describe(check), kReplanHint);
-    s.depositSummary = text(check, "summary", "", what + " (deposit_check)", kReplanHint);
+    const std::string where = what + " (deposit_check)";
+    s.depositSummary = text(check, "summary", "", where, kReplanHint);
+    s.depositChecked = true;
+    s.depositHeightMin = number(check, "height_min", 0.0, where, kReplanHint);
+    s.depositHeightMax = number(check, "height_max", 0.0, where, kReplanHint);
+    s.flagged = wholeNumber(check, "flagged", 0, where, kReplanHint);
+    if (check.contains("coverage"))
+      s.uncoveredFraction = number(check["coverage"], "uncovered_fraction", 0.0, where, kReplanHint);
+    if (check.contains("flagged_points") && check["flagged_points"].is_array())
+      for (const nlohmann::json& f : check["flagged_points"]) {
+        DepositFlagSummary flag;
+        flag.point =
+            static_cast<std::size_t>(std::max<std::int64_t>(0, wholeNumber(f, "point", where, kReplanHint)));
+        flag.kind = text(f, "kind", "", where, kReplanHint);
+        if (f.contains("height") && f["height"].is_number()) flag.height = f["height"].get<double>();
+        s.flaggedPoints.push_back(std::move(flag));
+      }
   }
+  s.points = wholeNumber(r, "n_points", 0, what, kReplanHint);
+  s.collapsedRevolutions = wholeNumber(r, "collapsed_revolutions", 0, what, kReplanHint);
+  s.closed = r.contains("closure_point") && !r["closure_point"].is_null();
+  s.rampHeightMin = number(r, "ramp_height_min", 0.0, what, kReplanHint);
+  s.rampHeightMax = number(r, "ramp_height_max", 0.0, what, kReplanHint);
+  if (r.contains("h_min") && r.contains("h_max"))
+    s.window = PlanWindow{number(r, "h", 0.0, what, kReplanHint), number(r, "h_min", what, kReplanHint),
+                          number(r, "h_max", what, kReplanHint),
+                          number(r, "height_tolerance_mm", 0.0, what, kReplanHint)};
+  if (r.contains("solid") && r["solid"].is_object() && r["solid"].contains("wall_thickness_mm")) {
+    const nlohmann::json& wall = r["solid"]["wall_thickness_mm"];
+    const std::string where = what + " (solid)";
+    s.solidWall = SolidWallSummary{number(wall, "median", 0.0, where, kReplanHint),
+                                   number(wall, "thinnest", 0.0, where, kReplanHint),
+                                   number(wall, "thickest", 0.0, where, kReplanHint)};
+  }
+  if (r.contains("process") && r["process"].is_object() && r["process"].contains("build_time_s"))
+    s.buildTime = number(r["process"], "build_time_s", what + " (process)", kReplanHint);
   return s;
+}
+
+nlohmann::json mergedPlanReport(const Results& results)
+{
+  const auto& spiral = results.report(Stage::Spiral);
+  if (!spiral || !spiral->is_object()) return nlohmann::json::object();
+  nlohmann::json report = *spiral;
+  if (const auto& process = results.report(Stage::Process)) report["process"] = *process;
+  if (const auto& motion = results.report(Stage::Kinematics); motion && motion->is_object())
+    for (const auto& [key, value] : motion->items()) report[key] = value;
+  return report;
+}
+
+std::optional<PlanReportSummary> planSummaryOf(const Results& results)
+{
+  if (!results.report(Stage::Spiral)) return std::nullopt;
+  try {
+    return summarisePlanReport(mergedPlanReport(results), "the plan's report");
+  } catch (const InputError&) {
+    return std::nullopt;
+  }
+}
+
+std::optional<PlanWindow> planWindow(const Results& results)
+{
+  const std::optional<PlanReportSummary> s = planSummaryOf(results);
+  return s ? s->window : std::nullopt;
 }
 
 }  // namespace spira

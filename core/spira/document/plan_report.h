@@ -3,10 +3,31 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
 namespace spira {
+
+struct Results;
+
+// The process window a plan was made with (mm).
+struct PlanWindow {
+  double h = 0.0, hMin = 0.0, hMax = 0.0, tolerance = 0.0;
+  bool outside(double height) const { return height < hMin - tolerance || height > hMax + tolerance; }
+};
+
+// A point the deposit check rejected (report.json's deposit_check.flagged_points).
+struct DepositFlagSummary {
+  std::size_t point = 0;
+  std::string kind;              // "below_deposit", "thin", "thick", "jump", "unsupported"
+  std::optional<double> height;  // mm: what lies below it, or the jump's length; none: nothing below
+};
+
+// The wall of a thin-walled solid planned on its mid-surface (mm).
+struct SolidWallSummary {
+  double median = 0.0, thinnest = 0.0, thickest = 0.0;
+};
 
 // What export takes from a plan's report (a plan folder's report.json, or the stage reports a
 // project stores): the names and figures for the program header and the plan's verdict. Every
@@ -21,6 +42,19 @@ struct PlanReportSummary {
   double heightMin = 0.0, heightMax = 0.0, pathLength = 0.0;  // mm
   std::optional<bool> feasible;
   std::string depositSummary;  // "deposit_check"."summary"
+
+  std::int64_t points = 0;                          // "n_points"
+  std::int64_t collapsedRevolutions = 0;            // folded into the closure point, not laid
+  bool closed = false;                              // ends on a closure point
+  double rampHeightMin = 0.0, rampHeightMax = 0.0;  // 0: no start-up or closing ramp
+  std::optional<PlanWindow> window;                 // the stage reports a project stores carry it
+  std::optional<SolidWallSummary> solidWall;
+  // The deposit check: heights measured on what lies below, the uncovered share of the surface.
+  bool depositChecked = false;
+  double depositHeightMin = 0.0, depositHeightMax = 0.0, uncoveredFraction = 0.0;
+  std::int64_t flagged = 0;                       // points it rejects
+  std::vector<DepositFlagSummary> flaggedPoints;  // the first 1000 of them
+  std::optional<double> buildTime;                // s: "process"."build_time_s"
 };
 
 // Parses a report's text; it must be a JSON object. Throws InputError naming `what` and, for a
@@ -28,5 +62,16 @@ struct PlanReportSummary {
 nlohmann::json parsePlanReport(const std::string& text, const std::string& what);
 
 PlanReportSummary summarisePlanReport(const nlohmann::json& report, const std::string& what);
+
+// The stage reports of a planned document in report.json's layout: the spiral's at the top, the
+// process's under "process", the robot motion's at the top. Empty without a spiral report.
+nlohmann::json mergedPlanReport(const Results& results);
+
+// The summary of a planned document's reports; nullopt without a spiral report or when a report
+// cannot be read (a damaged project: the views then show no figures rather than fail).
+std::optional<PlanReportSummary> planSummaryOf(const Results& results);
+
+// The process window of a planned document; nullopt without one.
+std::optional<PlanWindow> planWindow(const Results& results);
 
 }  // namespace spira

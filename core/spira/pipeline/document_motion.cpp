@@ -15,7 +15,7 @@
 namespace spira {
 
 DocumentMotion solveDocumentMotion(const DocumentState& snapshot, const Trajectory& plan, double substrateZ,
-                                   Progress& progress)
+                                   Progress& progress, bool resolveCollisions)
 {
   DocumentMotion out;
   if (!snapshot.cell || plan.empty()) return out;
@@ -30,6 +30,7 @@ DocumentMotion solveDocumentMotion(const DocumentState& snapshot, const Trajecto
     MotionSettings settings = motionSettingsFrom(snapshot.settings->section(PlanSettings::kProcessSection),
                                                  snapshot.settings->section(PlanSettings::kSpiralSection));
     settings.substrateZ = substrateZ;
+    settings.resolveCollisions = resolveCollisions;
     settings.part = snapshot.part ? snapshot.part->mesh.get() : nullptr;
     // A tilted part was planned with the world's up: the cell holds it the same way, so the
     // motion is solved in the build frame (where the substrate is a z plane) and turned back.

@@ -22,8 +22,9 @@ struct DocumentMotion {
 // Solves the robot (and positioner) motion of `plan` (part frame, with process channels) on the
 // cell of `snapshot`: torch collisions against the deposit and substrate, IK of every point,
 // robot links against the part. A cell that cannot be read or solved is a warning, not an error:
-// the plan itself stays valid. Cancellation propagates (Cancelled).
+// the plan itself stays valid. Cancellation propagates (Cancelled). `resolveCollisions` false keeps
+// the torch's planned tilt where it collides (the collisions are reported).
 DocumentMotion solveDocumentMotion(const DocumentState& snapshot, const Trajectory& plan, double substrateZ,
-                                   Progress& progress);
+                                   Progress& progress, bool resolveCollisions = true);
 
 }  // namespace spira

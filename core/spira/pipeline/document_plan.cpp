@@ -74,7 +74,8 @@ int planStageAt(double fraction)
   return 0;
 }
 
-DocumentPlan planDocument(const DocumentState& snapshot, const PluginRegistry& registry, Progress& progress)
+DocumentPlan planDocument(const DocumentState& snapshot, const PluginRegistry& registry, Progress& progress,
+                          const PlanDocumentOptions& options)
 {
   const auto start = std::chrono::steady_clock::now();
   if (!snapshot.part || !snapshot.part->mesh || snapshot.part->mesh->empty())
@@ -98,6 +99,7 @@ DocumentPlan planDocument(const DocumentState& snapshot, const PluginRegistry& r
   request.decomposerId = settings.decomposerId;
   request.closureFinderId = settings.closureFinderId;
   request.params = settings.params;
+  request.midSurfaceOfSolid = options.midSurfaceOfSolid;
   SubProgress planProgress(progress, 0.0, kPlanShare, "");
   PlanOutput plan = planOrAdvise(registry, request, planProgress);
   if (!frame.identity()) {
@@ -111,8 +113,7 @@ DocumentPlan planDocument(const DocumentState& snapshot, const PluginRegistry& r
   out.depositSummary = plan.deposits.summary();
   if (!out.feasible) {
     SubProgress adviceProgress(progress, kPlanShare, kPlanShare, "looking for a change that plans it");
-    const PlanAdvice advice = adviseChange(registry, request, &plan, adviceProgress);
-    out.advice = advice.text(false);
+    out.advice = adviseChange(registry, request, &plan, adviceProgress);
   }
   out.warnings = plan.warnings;
   out.summary = plan.solid ? plan.solid->summary() + "; " + summaryLine(plan) : summaryLine(plan);
@@ -121,6 +122,8 @@ DocumentPlan planDocument(const DocumentState& snapshot, const PluginRegistry& r
 
   const SpiralSettings window = spiralSettingsFrom(settings.section(PlanSettings::kSpiralSection));
   nlohmann::json full = planReportJson(plan, settings.decomposerId);
+  out.report = full;
+  if (out.advice) out.report["advice"] = adviceJson(*out.advice);
   full["h"] = window.h;
   full["h_min"] = window.hMin;
   full["h_max"] = window.hMax;
@@ -166,8 +169,16 @@ DocumentPlan planDocument(const DocumentState& snapshot, const PluginRegistry& r
   r.setReport(Stage::Process, share(std::move(processReport)));
 
   SubProgress kinematicsProgress(progress, kPlanShare, 1.0, "kinematics");
-  DocumentMotion kinematics =
-      solveDocumentMotion(snapshot, *r.process, request.substrateZ, kinematicsProgress);
+  const auto motionStart = std::chrono::steady_clock::now();
+  DocumentMotion kinematics = solveDocumentMotion(snapshot, *r.process, request.substrateZ,
+                                                  kinematicsProgress, options.resolveCollisions);
+  if (snapshot.cell)
+    plan.timings.push_back(
+        {"kinematics",
+         std::chrono::duration<double>(std::chrono::steady_clock::now() - motionStart).count()});
+  if (kinematics.report)
+    for (const auto& [key, value] : kinematics.report->items()) out.report[key] = value;
+  out.report["timings_s"] = timingsJson(plan.timings);
   out.warnings.insert(out.warnings.end(), kinematics.warnings.begin(), kinematics.warnings.end());
   out.motionOk = !snapshot.cell || kinematics.ok;
   if (kinematics.result) {
@@ -175,6 +186,7 @@ DocumentPlan planDocument(const DocumentState& snapshot, const PluginRegistry& r
     r.setReport(Stage::Kinematics, std::move(kinematics.report));
   }
 
+  out.output = std::move(plan);
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return out;
 }
@@ -205,18 +217,6 @@ std::optional<Stage> storePlanResults(Document& doc, const DocumentState& snapsh
   doc.setResults(std::move(r));
   if (stale && stageIndex(*stale) > stageIndex(Stage::Kinematics)) return std::nullopt;
   return stale;
-}
-
-std::optional<PlanWindow> planWindow(const Results& results)
-{
-  const auto& report = results.report(Stage::Spiral);
-  if (!report || !report->contains("h_min") || !report->contains("h_max")) return std::nullopt;
-  PlanWindow w;
-  w.h = report->value("h", 0.0);
-  w.hMin = report->value("h_min", 0.0);
-  w.hMax = report->value("h_max", 0.0);
-  w.tolerance = report->value("height_tolerance_mm", 0.0);
-  return w;
 }
 
 }  // namespace spira

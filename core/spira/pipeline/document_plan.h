@@ -5,7 +5,12 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "spira/document/document.h"
+#include "spira/document/plan_report.h"
+#include "spira/planning/plan_advice.h"
+#include "spira/planning/planner.h"
 
 namespace spira {
 
@@ -23,6 +28,12 @@ const std::array<PlanStageSpan, kPlanStageCount>& planStageSpans();
 // The stage index whose span holds `fraction` (the last one from its begin on).
 int planStageAt(double fraction);
 
+// Choices a plan takes beyond the document: the CLI's flags; the desktop app plans with the defaults.
+struct PlanDocumentOptions {
+  bool midSurfaceOfSolid = true;  // false: a watertight solid is refused (`--no-mid-surface`)
+  bool resolveCollisions = true;  // false: torch collisions are kept and reported (`--keep-collisions`)
+};
+
 // What planning a document hands back: the staged results (field, generatrices,
 // spiral, process and, with a cell, kinematics, each with its report) and what the user should read about it.
 struct DocumentPlan {
@@ -34,7 +45,12 @@ struct DocumentPlan {
   std::string summary;         // one line: revolutions, points, heights, build time
   std::string depositSummary;  // the deposit check's verdict in one sentence
   // An infeasible plan: the change Spira planned and found feasible, or what it tried.
-  std::string advice;
+  std::optional<PlanAdvice> advice;
+  // The plan folder's report.json: the plan's report with the advice, the cell's motion and the
+  // stage timings, as `spira-cli plan` writes it.
+  nlohmann::json report;
+  // The planner's output but the field, the generatrices and the trajectory, which moved into `results`.
+  PlanOutput output;
   size_t windowViolations = 0;
   size_t limitViolations = 0;
   double seconds = 0.0;
@@ -43,7 +59,8 @@ struct DocumentPlan {
 // Plans the part of `snapshot` with its settings, as the GUI (on a worker thread) and
 // `spira-cli plan PROJECT` do; touches no Document. Throws InputError when there is no part, and
 // whatever planPart() throws.
-DocumentPlan planDocument(const DocumentState& snapshot, const PluginRegistry& registry, Progress& progress);
+DocumentPlan planDocument(const DocumentState& snapshot, const PluginRegistry& registry, Progress& progress,
+                          const PlanDocumentOptions& options = {});
 
 // What in `settings` would stop a plan before it starts: values that contradict each other (only a
 // file can bring them: the panels refuse them) or a calibration table that cannot be read. Shown
@@ -57,12 +74,5 @@ std::vector<SettingsProblem> settingsProblems(const PlanSettings& settings);
 // edits made since (while it ran) left valid. Returns the first stage dropped, or nullopt when
 // all were stored.
 std::optional<Stage> storePlanResults(Document& doc, const DocumentState& snapshot, const Results& computed);
-
-// The process window the spiral report of a plan carries (mm); nullopt without a spiral report.
-struct PlanWindow {
-  double h = 0.0, hMin = 0.0, hMax = 0.0, tolerance = 0.0;
-  bool outside(double height) const { return height < hMin - tolerance || height > hMax + tolerance; }
-};
-std::optional<PlanWindow> planWindow(const Results& results);
 
 }  // namespace spira

@@ -219,4 +219,13 @@ nlohmann::json planReportJson(const PlanOutput& plan, const std::string& strateg
   return j;
 }
 
+nlohmann::json adviceJson(const PlanAdvice& advice)
+{
+  return {{"found", advice.found},
+          {"change", advice.change},
+          {"flags", advice.flags},
+          {"tried", advice.tried},
+          {"cause", advice.cause}};
+}
+
 }  // namespace spira

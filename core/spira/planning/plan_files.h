@@ -5,6 +5,7 @@
 
 #include <nlohmann/json_fwd.hpp>
 
+#include "spira/planning/plan_advice.h"
 #include "spira/planning/planner.h"
 
 namespace spira {
@@ -20,5 +21,8 @@ std::string trajectoryCsv(const Trajectory& trajectory);
 // The plan report (report.json): the summary keys of the CLI contract plus details, "n_paths" and
 // one summary per sub-path under "paths" (and "branching" for a multi-branch part).
 nlohmann::json planReportJson(const PlanOutput& plan, const std::string& strategy);
+
+// report.json's "advice" of an infeasible plan.
+nlohmann::json adviceJson(const PlanAdvice& advice);
 
 }  // namespace spira

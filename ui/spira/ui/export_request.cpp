@@ -10,35 +10,26 @@
 #include <nlohmann/json.hpp>
 
 #include "spira/base/error.h"
-#include "spira/pipeline/prep_schema.h"
-#include "spira/robotcell/robot_cell.h"
 #include "spira/pipeline/document_plan.h"
+#include "spira/pipeline/prep_schema.h"
+#include "spira/pipeline/program_header.h"
+#include "spira/robotcell/robot_cell.h"
 
 namespace spira::ui {
 
 namespace {
 
-std::string utcNow()
+// The motion report's number, 0 when the key is missing or not a number.
+double number(const nlohmann::json& j, const char* key)
 {
-  const std::time_t now = std::time(nullptr);
-  std::ostringstream date;
-  date << std::put_time(std::gmtime(&now), "%Y-%m-%d %H:%M UTC");
-  return date.str();
+  const auto it = j.is_object() ? j.find(key) : j.end();
+  return it != j.end() && it->is_number() ? it->get<double>() : 0.0;
 }
 
-// A report's number, 0 when the report or the key is missing or not a number.
-double number(const std::shared_ptr<const nlohmann::json>& j, const char* key)
+std::string text(const nlohmann::json& j, const char* key)
 {
-  if (!j || !j->is_object()) return 0.0;
-  const auto it = j->find(key);
-  return it != j->end() && it->is_number() ? it->get<double>() : 0.0;
-}
-
-std::string text(const std::shared_ptr<const nlohmann::json>& j, const char* key)
-{
-  if (!j || !j->is_object()) return {};
-  const auto it = j->find(key);
-  return it != j->end() && it->is_string() ? it->get<std::string>() : std::string();
+  const auto it = j.is_object() ? j.find(key) : j.end();
+  return it != j.end() && it->is_string() ? it->get<std::string>() : std::string();
 }
 
 PreviewFile readHead(const std::filesystem::path& file, size_t lines)
@@ -66,17 +57,10 @@ ExportRequest makeExportRequest(const Results& results, const std::string& partN
                      ? std::shared_ptr<const Trajectory>(results.kinematics, &results.kinematics->path)
                      : results.process;
   if (cell) r.cell = *cell;
-  r.header["part"] = partName;
-  r.header["cell"] = cell ? cell->name : std::string("none (targets in the part frame)");
-  r.header["date"] = utcNow();
-  const auto& report = results.report(Stage::Spiral);
-  if (report) {
-    std::ostringstream plan;
-    plan << std::setprecision(4) << text(report, "part_type") << " part, " << number(report, "n_revolutions")
-         << " revolutions, deposit " << number(report, "height_min") << " .. " << number(report, "height_max")
-         << " mm, path " << number(report, "path_length") << " mm";
-    r.header["plan"] = plan.str();
-  }
+  const std::optional<PlanReportSummary> plan = planSummaryOf(results);
+  r.header = programHeader(partName, cell ? cell->name : std::string(), plan ? *plan : PlanReportSummary(),
+                           std::time(nullptr));
+  if (!plan) r.header.erase("plan");
   return r;
 }
 
@@ -146,7 +130,7 @@ std::vector<std::string> exportWarnings(const Results& results, const ExportPrev
                     " planned point(s) are out of the robot's reach or joint limits.");
     if (collisions > 0)
       out.push_back(std::to_string(collisions) + " planned point(s) put the torch in collision.");
-    const auto report = std::make_shared<const nlohmann::json>(k->report);
+    const nlohmann::json& report = k->report;
     const double speed = number(report, "max_joint_speed_ratio");
     if (speed > 1.0) {
       s << std::fixed << std::setprecision(0) << "A joint would have to turn at " << 100.0 * speed

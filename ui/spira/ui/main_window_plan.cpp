@@ -99,7 +99,7 @@ void MainWindow::finishPlan(const TaskOutcome& outcome, const DocumentState& sna
       if (!result.feasible)
         log_->warning(tr("The plan is infeasible: %1.").arg(fromStd(result.depositSummary)),
                       tr("The points are listed below (click one to select it). Spira's advice: %1.")
-                          .arg(fromStd(result.advice)));
+                          .arg(fromStd(result.advice ? result.advice->text(false) : std::string())));
     }
   }
   emit planFinished(outcome);

@@ -10,8 +10,8 @@
 #include <nlohmann/json.hpp>
 
 #include "spira/document/results.h"
-#include "spira/ui/log_panel.h"
 #include "spira/pipeline/document_plan.h"
+#include "spira/ui/log_panel.h"
 
 namespace spira::ui {
 
@@ -47,23 +47,20 @@ struct Lister {
 // The deposit check's points, from the spiral stage's report (report.json's deposit_check).
 void listDepositFlags(const Lister& lister, const Results& results)
 {
-  const auto& report = results.report(Stage::Spiral);
-  if (!report || !report->contains("deposit_check")) return;
-  const nlohmann::json& check = (*report)["deposit_check"];
-  const nlohmann::json& points = check.value("flagged_points", nlohmann::json::array());
+  const std::optional<PlanReportSummary> plan = planSummaryOf(results);
+  if (!plan || !plan->depositChecked) return;
   std::vector<size_t> flagged;
   std::map<size_t, QString> what;
   const QLocale loc;
-  for (const nlohmann::json& f : points) {
-    const size_t i = f.value("point", size_t{0});
+  for (const DepositFlagSummary& f : plan->flaggedPoints) {
+    const size_t i = f.point;
     if (i >= lister.path.size()) continue;
-    const std::string kind = f.value("kind", std::string());
-    const nlohmann::json& h = f.contains("height") ? f["height"] : nlohmann::json(nullptr);
-    const QString mm = h.is_number() ? loc.toString(h.get<double>(), 'f', 2) : QString();
+    const std::string& kind = f.kind;
+    const QString mm = f.height ? loc.toString(*f.height, 'f', 2) : QString();
     QString text;
     if (kind == "below_deposit")
       text = QObject::tr("it lies %1 mm under material already laid.")
-                 .arg(loc.toString(-h.get<double>(), 'f', 2));
+                 .arg(loc.toString(-f.height.value_or(0.0), 'f', 2));
     else if (kind == "thin")
       text = QObject::tr("the bead under it is only %1 mm below: thinner than the process lays.").arg(mm);
     else if (kind == "thick")

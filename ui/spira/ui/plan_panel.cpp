@@ -1,5 +1,7 @@
 #include "spira/ui/plan_panel.h"
 
+#include "spira/document/plan_report.h"
+
 #include <QAction>
 #include <QComboBox>
 #include <QFormLayout>
@@ -240,67 +242,56 @@ void PlanPanel::refreshValues()
 void PlanPanel::refreshVerdict()
 {
   const Results& r = doc_.results();
-  const auto& report = r.report(Stage::Spiral);
+  const std::optional<PlanReportSummary> plan = r.spiral ? planSummaryOf(r) : std::nullopt;
   QString text, style;
-  if (!r.spiral || !report) {
+  if (!plan) {
     text = doc_.part() ? tr("No plan yet: press <b>Plan</b> (F5).")
                        : tr("Import a part, then press <b>Plan</b> (F5).");
     style = QStringLiteral("color: palette(mid);");
   } else {
-    const nlohmann::json& j = *report;
-    const bool feasible = j.value("feasible", false);
+    const PlanReportSummary& p = *plan;
+    const bool feasible = p.feasible.value_or(false);
     const QLocale loc;
     QStringList lines;
     // The revolutions laid: those folded into the closure point are not drawn.
-    const int laid = j.value("n_revolutions", 0) - j.value("collapsed_revolutions", 0);
-    const bool closed = j.contains("closure_point") && !j["closure_point"].is_null();
-    lines << (closed ? tr("%1 revolutions and the closure point, %2 points, path %3 m")
-                     : tr("%1 revolutions, %2 points, path %3 m"))
+    const auto laid = static_cast<int>(p.revolutions - p.collapsedRevolutions);
+    lines << (p.closed ? tr("%1 revolutions and the closure point, %2 points, path %3 m")
+                       : tr("%1 revolutions, %2 points, path %3 m"))
                  .arg(laid)
-                 .arg(loc.toString(static_cast<qulonglong>(j.value("n_points", 0))))
-                 .arg(loc.toString(j.value("path_length", 0.0) / 1000.0, 'f', 2));
+                 .arg(loc.toString(static_cast<qlonglong>(p.points)))
+                 .arg(loc.toString(p.pathLength / 1000.0, 'f', 2));
+    const PlanWindow window = p.window.value_or(PlanWindow());
     lines << tr("Deposit height %1 to %2 (window %3 to %4)")
-                 .arg(mmText(j.value("height_min", 0.0)), mmText(j.value("height_max", 0.0)),
-                      mmText(j.value("h_min", 0.0)), mmText(j.value("h_max", 0.0)));
+                 .arg(mmText(p.heightMin), mmText(p.heightMax), mmText(window.hMin), mmText(window.hMax));
     // The ramps climb from the substrate and level the top across the whole window: said here so
     // the colours at the bottom and top rows do not contradict the line above.
-    if (const double rampMax = j.value("ramp_height_max", 0.0); rampMax > 0.0)
-      lines << tr("Start-up and closing ramps %1 to %2")
-                   .arg(mmText(j.value("ramp_height_min", 0.0)), mmText(rampMax));
+    if (p.rampHeightMax > 0.0)
+      lines
+          << tr("Start-up and closing ramps %1 to %2").arg(mmText(p.rampHeightMin), mmText(p.rampHeightMax));
     // A thin-walled solid is planned on its mid-surface: say so, or the spiral inside the drawn
     // solid reads as a path off the part.
-    if (j.contains("solid") && j["solid"].is_object()) {
-      const nlohmann::json wall = j["solid"].value("wall_thickness_mm", nlohmann::json::object());
+    if (p.solidWall)
       lines << tr("Thin-walled solid, wall %1 (%2 to %3): planned on its mid-surface")
-                   .arg(mmText(wall.value("median", 0.0)), mmText(wall.value("thinnest", 0.0)),
-                        mmText(wall.value("thickest", 0.0)));
-    }
-    const nlohmann::json check = j.contains("deposit_check") && j["deposit_check"].is_object()
-                                     ? j["deposit_check"]
-                                     : nlohmann::json::object();
-    if (!check.empty()) {
-      const nlohmann::json coverage = check.value("coverage", nlohmann::json::object());
+                   .arg(mmText(p.solidWall->median), mmText(p.solidWall->thinnest),
+                        mmText(p.solidWall->thickest));
+    if (p.depositChecked)
       lines << tr("Deposit check: laid %1 to %2 on what is below, %3 % of the surface covered")
-                   .arg(mmText(check.value("height_min", 0.0)), mmText(check.value("height_max", 0.0)),
-                        loc.toString(100.0 * (1.0 - coverage.value("uncovered_fraction", 0.0)), 'f', 1));
-    }
-    if (const auto& process = r.report(Stage::Process); r.process && process) {
-      lines << tr("Build time %1 min").arg(loc.toString(process->value("build_time_s", 0.0) / 60.0, 'f', 1));
-    } else {
+                   .arg(mmText(p.depositHeightMin), mmText(p.depositHeightMax),
+                        loc.toString(100.0 * (1.0 - p.uncoveredFraction), 'f', 1));
+    if (r.process && p.buildTime)
+      lines << tr("Build time %1 min").arg(loc.toString(*p.buildTime / 60.0, 'f', 1));
+    else
       lines << tr("Process channels out of date: press Plan again.");
-    }
     if (feasible) {
       text = tr("<b>Feasible plan</b><br>%1").arg(lines.join(QStringLiteral("<br>")));
       style = QStringLiteral(
           "background: #e3f4e1; color: #1d5a1a; border: 1px solid #9fcf99; border-radius: 3px;");
     } else {
-      const int flagged = check.value("flagged", 0);
+      const auto flagged = static_cast<int>(p.flagged);
       const QString why =
           flagged > 0 ? tr("the deposit check rejects %n point(s) (listed in Messages)", nullptr, flagged)
                       : tr("%1 % of the surface is left uncovered")
-                            .arg(loc.toString(100.0 * check.value("coverage", nlohmann::json::object())
-                                                          .value("uncovered_fraction", 0.0),
-                                              'f', 1));
+                            .arg(loc.toString(100.0 * p.uncoveredFraction, 'f', 1));
       text = tr("<b>Infeasible plan:</b> %1<br>%2").arg(why, lines.join(QStringLiteral("<br>")));
       style = QStringLiteral(
           "background: #fbe3e1; color: #8a1c14; border: 1px solid #e3a29b; border-radius: 3px;");
@@ -308,8 +299,7 @@ void PlanPanel::refreshVerdict()
   }
   verdict_->setText(text);
   verdict_->setStyleSheet(style);
-  verdict_->setProperty("feasible",
-                        r.spiral && report ? QVariant(report->value("feasible", false)) : QVariant());
+  verdict_->setProperty("feasible", plan ? QVariant(plan->feasible.value_or(false)) : QVariant());
 }
 
 }  // namespace spira::ui

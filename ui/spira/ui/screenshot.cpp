@@ -1,5 +1,7 @@
 #include "spira/ui/screenshot.h"
 
+#include "spira/document/plan_report.h"
+
 #include <QApplication>
 #include <QDir>
 #include <QElapsedTimer>
@@ -98,8 +100,8 @@ int takeScreenshot(const ScreenshotRequest& request, const PluginRegistry& regis
       printError(err, QStringLiteral("the part could not be planned: %1").arg(outcome.message), outcome.hint);
       return kExitBadInput;
     }
-    const auto& report = doc.results().report(Stage::Spiral);
-    if (!report || !report->value("feasible", false)) planned = kExitInfeasible;
+    const std::optional<PlanReportSummary> plan = planSummaryOf(doc.results());
+    if (!plan || !plan->feasible.value_or(false)) planned = kExitInfeasible;
   }
 
   const QImage image = window.captureImage();
