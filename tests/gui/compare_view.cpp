@@ -22,7 +22,7 @@
 #include "spira/document/document.h"
 #include "spira/ui/color_maps.h"
 #include "spira/ui/compare_view.h"
-#include "spira/ui/comparison_reader.h"
+#include "spira/pipeline/comparison_reader.h"
 #include "spira/ui/main_window.h"
 #include "support/gui_test_support.h"
 #include "support/test_support.h"
@@ -75,7 +75,7 @@ TEST(CompareView, ShowsTwoStrategiesFromFilesOnOneScaleAndCamera)
   TempDir dir;
   const Comparison truth = madeUp();
   writeComparisonFiles(truth, dir.path());
-  const Comparison read = ui::readComparison(dir / "compare.csv");
+  const Comparison read = readComparison(dir / "compare.csv");
   ASSERT_EQ(read.strategies.size(), 3u);
   EXPECT_DOUBLE_EQ(read.hMax, 2.2);
   EXPECT_EQ(read.strategies[1].failure, "the part has no closure point");

@@ -36,7 +36,7 @@
 #include "spira/plugin/plugin_registry.h"
 #include "spira/plugin/strategy_name.h"
 #include "spira/ui/color_maps.h"
-#include "spira/ui/comparison_reader.h"
+#include "spira/pipeline/comparison_reader.h"
 #include "spira/ui/interaction_style.h"
 #include "spira/ui/task_runner.h"
 

@@ -4,7 +4,7 @@
 
 #include "spira/planning/strategy_compare.h"
 
-namespace spira::ui {
+namespace spira {
 
 // Reads what `spira-cli compare` wrote: `file` is compare.json or compare.csv (or their folder);
 // the other file of the pair is read from the same folder when it is there. compare.json gives
@@ -13,4 +13,4 @@ namespace spira::ui {
 // Throws IoError when neither can be read and InputError when one is malformed.
 Comparison readComparison(const std::filesystem::path& file);
 
-}  // namespace spira::ui
+}  // namespace spira

@@ -1,4 +1,4 @@
-#include "spira/ui/comparison_reader.h"
+#include "spira/pipeline/comparison_reader.h"
 
 #include <algorithm>
 #include <cstdint>
@@ -14,7 +14,7 @@
 #include "spira/base/number_text.h"
 #include "spira/document/json_read.h"
 
-namespace spira::ui {
+namespace spira {
 
 namespace {
 
@@ -145,4 +145,4 @@ Comparison readComparison(const fs::path& file)
   return c;
 }
 
-}  // namespace spira::ui
+}  // namespace spira
