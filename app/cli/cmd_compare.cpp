@@ -8,6 +8,7 @@
 #include "part_placement.h"
 #include "spira/base/atomic_file.h"
 #include "spira/planning/plan_schemas.h"
+#include "spira/planning/settings_sections.h"
 #include "spira/planning/strategy_compare.h"
 
 namespace spira::cli {
@@ -22,11 +23,10 @@ struct CompareFlags {
   {
     std::vector<const Plugin*> plugins = registry.ofKind(PluginKind::Decomposer);
     for (const Plugin* p : registry.ofKind(PluginKind::ClosureFinder)) plugins.push_back(p);
-    values["spiral"];
-    values["process"];
+    for (const SettingsSection& s : planSections()) values[std::string(s.name)];
     for (const Plugin* p : plugins) values[p->id()];
-    targets.push_back(FlagTarget{"spiral", &spiralSchema(), &values["spiral"]});
-    targets.push_back(FlagTarget{"process", &processSchema(), &values["process"]});
+    for (const SettingsSection& s : planSections())
+      targets.push_back(FlagTarget{std::string(s.name), &s.schema, &values[std::string(s.name)]});
     for (const Plugin* p : plugins) targets.push_back(FlagTarget{p->id(), &p->schema(), &values[p->id()]});
   }
 };

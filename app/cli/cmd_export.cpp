@@ -150,7 +150,7 @@ int cmdExport(const std::vector<std::string>& argv)
   const bool csv = format == kCsvFormat;
   const ExporterPlugin* exporter = format.empty() || csv ? nullptr : &exporterFor(registry, format);
   ParamSet exporterValues, prepValues;
-  std::vector<FlagTarget> targets{FlagTarget{"prep", &prepSchema(), &prepValues}};
+  std::vector<FlagTarget> targets{FlagTarget{std::string(prepSection().name), &prepSchema(), &prepValues}};
   if (exporter) targets.push_back(FlagTarget{exporter->id(), &exporter->schema(), &exporterValues});
   if (help) {
     std::cout
@@ -207,7 +207,7 @@ int cmdExport(const std::vector<std::string>& argv)
   ExportJob job;
   job.exporterId = exporter->id();
   job.exporterParams = merged(source.settings.section(exporter->id()), exporterValues);
-  job.prep = prepParamsFrom(merged(source.settings.section("prep"), prepValues));
+  job.prep = prepParamsFrom(merged(source.settings.section(std::string(prepSection().name)), prepValues));
   job.cell = cell ? &*cell : nullptr;
   job.plannedCollision = source.plannedCollision;
   job.header = programHeader(source.partName, source.cellName, source.report);

@@ -23,6 +23,7 @@
 #include "spira/planning/plan_files.h"
 #include "spira/planning/plan_schemas.h"
 #include "spira/planning/planner.h"
+#include "spira/planning/settings_sections.h"
 #include "spira/plugin/strategy_name.h"
 
 namespace fs = std::filesystem;
@@ -36,13 +37,12 @@ struct PlanFlags {
   std::vector<FlagTarget> targets;
   explicit PlanFlags(const PluginRegistry& registry)
   {
-    values["spiral"];
-    values["process"];
+    for (const SettingsSection& s : planSections()) values[std::string(s.name)];
     std::vector<const Plugin*> plugins = registry.ofKind(PluginKind::Decomposer);
     for (const Plugin* p : registry.ofKind(PluginKind::ClosureFinder)) plugins.push_back(p);
     for (const Plugin* p : plugins) values[p->id()];
-    targets.push_back(FlagTarget{"spiral", &spiralSchema(), &values["spiral"]});
-    targets.push_back(FlagTarget{"process", &processSchema(), &values["process"]});
+    for (const SettingsSection& s : planSections())
+      targets.push_back(FlagTarget{std::string(s.name), &s.schema, &values[std::string(s.name)]});
     for (const Plugin* p : plugins) targets.push_back(FlagTarget{p->id(), &p->schema(), &values[p->id()]});
   }
 };
@@ -115,7 +115,7 @@ int cmdPlan(const std::vector<std::string>& argv)
   targets.insert(targets.end(), importFlags.targets().begin(), importFlags.targets().end());
   if (exporter) {
     targets.push_back(FlagTarget{exporter->id(), &exporter->schema(), &exporterValues});
-    targets.push_back(FlagTarget{"prep", &prepSchema(), &prepValues});
+    targets.push_back(FlagTarget{std::string(prepSection().name), &prepSchema(), &prepValues});
   }
 
   if (help) {
@@ -155,7 +155,7 @@ int cmdPlan(const std::vector<std::string>& argv)
   args.rest = takeParamFlags(args.rest, targets);
   const auto positional = args.finish("plan", 1, 1);
   if (outDir.empty()) throw UsageError("'plan' needs an output folder", "write -o DIR");
-  if (strategy.empty()) strategy = "isovalue";
+  if (strategy.empty()) strategy = strategyName(kDefaultDecomposerId);
   if (exporter && cellFile.empty())
     std::cerr << "note: no --cell given: the program's targets are torch poses in the part frame\n";
 

@@ -18,36 +18,20 @@ ParamSchema makeSchema()
   defs.push_back(
       pointsPerRevolutionParam("Envelope generatrices are spread evenly in angle around the part's axis."));
   defs.push_back(levelSpacingParam("Every generatrix gets the same number of points."));
-  {
-    ParamDef d;
-    d.key = "axis";
-    d.type = ParamType::Choice;
-    d.defaultValue = std::string("auto");
-    d.choices = {"auto", "skeleton", "vertical"};
-    d.label = "Projection axis";
-    d.tooltip =
-        "What the envelope is projected towards. auto: the part's curve skeleton, or the vertical "
-        "axis through the base centroid when the skeleton runs along it; skeleton: always the "
-        "skeleton; vertical: the vertical axis through the base centroid, no skeleton (fastest, for "
-        "upright parts of revolution).";
-    d.category = "Projection";
-    defs.push_back(d);
-  }
-  {
-    ParamDef d;
-    d.key = "start_angle";
-    d.type = ParamType::Double;
-    d.defaultValue = 0.0;
-    d.min = -360.0;
-    d.max = 360.0;
-    d.unit = "deg";
-    d.label = "Start angle";
-    d.tooltip =
-        "Angle about the axis of the first generatrix, where the spiral starts: 0 is +X, counted "
-        "counter-clockwise seen from above.";
-    d.category = "Projection";
-    defs.push_back(d);
-  }
+  defs.push_back(
+      choiceParam("axis", "auto", {"auto", "skeleton", "vertical"},
+                  {"Projection axis",
+                   "What the envelope is projected towards. auto: the part's curve skeleton, or the "
+                   "vertical axis through the base centroid when the skeleton runs along it; skeleton: "
+                   "always the skeleton; vertical: the vertical axis through the base centroid, no "
+                   "skeleton (fastest, for upright parts of revolution).",
+                   "Projection"}));
+  defs.push_back(
+      numberParam("start_angle", 0.0, -360.0, 360.0, "deg",
+                  {"Start angle",
+                   "Angle about the axis of the first generatrix, where the spiral starts: 0 is +X, "
+                   "counted counter-clockwise seen from above.",
+                   "Projection"}));
   return ParamSchema(std::move(defs));
 }
 
@@ -90,15 +74,9 @@ bool EnvelopeDecomposer::accepts(const DecomposeInput& input, std::string* why) 
   return canPlan(input, why);
 }
 
-DecomposeResult EnvelopeDecomposer::decompose(const DecomposeInput& input, const ParamSet& params,
-                                              Progress& progress) const
+DecomposeResult EnvelopeDecomposer::decomposeChecked(const DecomposeInput& input, const ParamSet& values,
+                                                     Progress& progress) const
 {
-  std::string why;
-  if (!canPlan(input, &why))
-    throw InputError("decomposer.envelope_projection cannot plan this part: " + why,
-                     "choose the iso-value strategy (--strategy isovalue)");
-  const ParamSet values = params.withDefaults(schema_);
-  schema_.validate(values);
   EnvelopeOptions options;
   options.generatrixCount = static_cast<size_t>(values.getInt("points_per_rev"));
   options.pointSpacing = values.internal(schema_, "level_spacing");

@@ -18,10 +18,10 @@ class EnvelopeDecomposer final : public DecomposerPlugin {
   std::string description() const override;
   const ParamSchema& schema() const override { return schema_; }
   bool accepts(const DecomposeInput& input, std::string* why) const override;
-  DecomposeResult decompose(const DecomposeInput& input, const ParamSet& params,
-                            Progress& progress) const override;
 
  private:
+  DecomposeResult decomposeChecked(const DecomposeInput& input, const ParamSet& values,
+                                   Progress& progress) const override;
   ParamSchema schema_;
 };
 

@@ -18,35 +18,18 @@ ParamSchema makeSchema()
       "The base is cut at this many constant angles and each cut starts one geodesic; fill-in "
       "generatrices may add more where geodesics leave gaps."));
   defs.push_back(levelSpacingParam("Every generatrix gets the same number of points."));
-  {
-    ParamDef d;
-    d.key = "coverage_tolerance";
-    d.type = ParamType::Double;
-    d.defaultValue = 0.2;
-    d.min = 0.001;
-    d.max = 100.0;
-    d.unit = "mm";
-    d.label = "Coverage tolerance";
-    d.tooltip =
-        "Largest gap allowed between the surface and the strip joining two neighbouring generatrices (thesis "
-        "eps_0, Eq. 3.9); beyond it a fill-in generatrix is inserted between them.";
-    d.category = "Coverage";
-    defs.push_back(d);
-  }
-  {
-    ParamDef d;
-    d.key = "fill_rounds";
-    d.type = ParamType::Int;
-    d.defaultValue = std::int64_t{6};
-    d.min = 0;
-    d.max = 12;
-    d.label = "Fill-in rounds";
-    d.tooltip =
-        "How many times the coverage check may insert fill-in generatrices between neighbours (each round "
-        "halves the gaps it splits); 0 turns the fill-in off.";
-    d.category = "Coverage";
-    defs.push_back(d);
-  }
+  defs.push_back(numberParam(
+      "coverage_tolerance", 0.2, 0.001, 100.0, "mm",
+      {"Coverage tolerance",
+       "Largest gap allowed between the surface and the strip joining two neighbouring generatrices (thesis "
+       "eps_0, Eq. 3.9); beyond it a fill-in generatrix is inserted between them.",
+       "Coverage"}));
+  defs.push_back(integerParam(
+      "fill_rounds", 6, 0, 12,
+      {"Fill-in rounds",
+       "How many times the coverage check may insert fill-in generatrices between neighbours (each round "
+       "halves the gaps it splits); 0 turns the fill-in off.",
+       "Coverage"}));
   return ParamSchema(std::move(defs));
 }
 
@@ -66,14 +49,9 @@ bool GeodesicDecomposer::accepts(const DecomposeInput& input, std::string* why) 
   return hasPlannableEdges(input, why);
 }
 
-DecomposeResult GeodesicDecomposer::decompose(const DecomposeInput& input, const ParamSet& params,
-                                              Progress& progress) const
+DecomposeResult GeodesicDecomposer::decomposeChecked(const DecomposeInput& input, const ParamSet& values,
+                                                     Progress& progress) const
 {
-  std::string why;
-  if (!hasPlannableEdges(input, &why))
-    throw InputError("decomposer.geodesic cannot plan this part: " + why, "check the part's free edges");
-  const ParamSet values = params.withDefaults(schema_);
-  schema_.validate(values);
   geodesic::GeodesicOptions options;
   options.pointsPerRevolution = static_cast<size_t>(values.getInt("points_per_rev"));
   options.pointSpacing = values.internal(schema_, "level_spacing");

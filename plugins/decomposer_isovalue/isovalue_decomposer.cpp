@@ -37,15 +37,9 @@ bool IsovalueDecomposer::accepts(const DecomposeInput& input, std::string* why) 
   return hasPlannableEdges(input, why);
 }
 
-DecomposeResult IsovalueDecomposer::decompose(const DecomposeInput& input, const ParamSet& params,
-                                              Progress& progress) const
+DecomposeResult IsovalueDecomposer::decomposeChecked(const DecomposeInput& input, const ParamSet& values,
+                                                     Progress& progress) const
 {
-  std::string why;
-  if (!hasPlannableEdges(input, &why))
-    throw InputError("decomposer.isovalue cannot plan this part: " + why,
-                     "check the part's free edges, or recompute the field for this mesh");
-  const ParamSet values = params.withDefaults(schema_);
-  schema_.validate(values);
   IsoDecompositionOptions options;
   options.pointsPerContour = static_cast<size_t>(values.getInt("points_per_rev"));
   options.levelSpacing = values.internal(schema_, "level_spacing");

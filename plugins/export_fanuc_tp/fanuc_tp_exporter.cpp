@@ -17,20 +17,6 @@ namespace spira {
 
 namespace {
 
-ParamDef choiceDef(std::string key, std::string value, std::vector<std::string> choices, std::string label,
-                   std::string tooltip, std::string category)
-{
-  ParamDef d;
-  d.key = std::move(key);
-  d.type = ParamType::Choice;
-  d.defaultValue = std::move(value);
-  d.choices = std::move(choices);
-  d.label = std::move(label);
-  d.tooltip = std::move(tooltip);
-  d.category = std::move(category);
-  return d;
-}
-
 ParamSchema makeSchema()
 {
   std::vector<ParamDef> defs;
@@ -47,35 +33,30 @@ ParamSchema makeSchema()
   defs.push_back(intParam("utool", 1, 1, 10, "Tool frame",
                           "UTOOL_NUM of the torch TCP; it must be the TCP the kinematics used.", "Frames"));
   defs.push_back(
-      choiceDef("position_format", "cartesian", {"cartesian", "joint"}, "Positions",
-                "cartesian: XYZWPR with the CONFIG string. joint: the solved J1..J6 (needs a solved "
-                "cell), so the robot runs exactly the optimised joint motion (seed 004's production "
-                "mode); approach and retract stay Cartesian.",
-                "Frames"));
-  {
-    ParamDef d;
-    d.key = "default_config";
-    d.type = ParamType::String;
-    d.defaultValue = std::string("N U T, 0, 0, 0");
-    d.label = "Default configuration";
-    d.tooltip =
-        "CONFIG string used when the plan has no solved cell: wrist N/F, elbow U/D, base T/B, then the "
-        "J1, J4, J6 turn numbers.";
-    d.category = "Frames";
-    defs.push_back(d);
-  }
+      choiceParam("position_format", "cartesian", {"cartesian", "joint"},
+                  {"Positions",
+                   "cartesian: XYZWPR with the CONFIG string. joint: the solved J1..J6 (needs a solved "
+                   "cell), so the robot runs exactly the optimised joint motion (seed 004's production "
+                   "mode); approach and retract stay Cartesian.",
+                   "Frames"}));
+  defs.push_back(textParam("default_config", "N U T, 0, 0, 0",
+                           {"Default configuration",
+                            "CONFIG string used when the plan has no solved cell: wrist N/F, elbow U/D, base "
+                            "T/B, then the J1, J4, J6 turn numbers.",
+                            "Frames"}));
   defs.push_back(
       intParam("cnt", 100, 0, 100, "Continuous termination",
                "CNT value of the path moves: 100 rounds each point most smoothly, 0 slows down to each "
                "one. The arc start and end points are always FINE.",
                "Motion"));
   defs.push_back(
-      choiceDef("speed_unit", "auto", {"auto", "mm/sec", "cm/min", "msec"}, "Speed unit",
-                "mm/sec and cm/min write the plan's travel speed rounded to whole units (cm/min is "
-                "six times finer); msec writes each move's planned duration, which also holds with a "
-                "moving positioner. auto: msec with a positioner (the table carries the part under a "
-                "torch that hardly moves, so a TCP speed would be meaningless), mm/sec otherwise.",
-                "Motion"));
+      choiceParam("speed_unit", "auto", {"auto", "mm/sec", "cm/min", "msec"},
+                  {"Speed unit",
+                   "mm/sec and cm/min write the plan's travel speed rounded to whole units (cm/min is "
+                   "six times finer); msec writes each move's planned duration, which also holds with a "
+                   "moving positioner. auto: msec with a positioner (the table carries the part under a "
+                   "torch that hardly moves, so a TCP speed would be meaningless), mm/sec otherwise.",
+                   "Motion"}));
   defs.push_back(approachDistanceParam());
   defs.push_back(approachSpeedParam(2000.0));
   defs.push_back(jointSpeedParam());

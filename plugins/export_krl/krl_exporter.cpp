@@ -29,21 +29,13 @@ ParamSchema makeSchema()
                "are in the robot base frame, so use 0 (or a base equal to $ROBROOT); without one they "
                "are in the part frame, so use the base measured on the part.",
                "Frames"));
-  {
-    ParamDef d;
-    d.key = "c_dis";
-    d.type = ParamType::Double;
-    d.defaultValue = 0.5;
-    d.min = 0.0;
-    d.max = 50.0;
-    d.unit = "mm";
-    d.label = "Approximation distance";
-    d.tooltip =
-        "$APO.CDIS: the robot rounds each point within this distance (LIN ... C_DIS) so the path runs "
-        "without stops. Keep it below half the point spacing. 0 stops at every point.";
-    d.category = "Motion";
-    defs.push_back(d);
-  }
+  defs.push_back(
+      numberParam("c_dis", 0.5, 0.0, 50.0, "mm",
+                  {"Approximation distance",
+                   "$APO.CDIS: the robot rounds each point within this distance (LIN ... C_DIS) so the "
+                   "path runs without stops. Keep it below half the point spacing. 0 stops at every "
+                   "point.",
+                   "Motion"}));
   defs.push_back(approachDistanceParam());
   defs.push_back(approachSpeedParam(2000.0));
   defs.push_back(jointSpeedParam());

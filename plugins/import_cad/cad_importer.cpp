@@ -8,28 +8,18 @@ namespace {
 std::vector<ParamDef> tessellationParams()
 {
   return {
-      ParamDef{"linear_deflection",
-               ParamType::Double,
-               0.1,
-               0.001,
-               10.0,
-               "mm",
-               "Linear deflection",
-               "Largest distance allowed between the CAD surface and its triangles. Smaller values follow "
-               "curved walls more closely and give more triangles.",
-               "Tessellation",
-               {}},
-      ParamDef{"angular_deflection",
-               ParamType::Double,
-               10.0,
-               1.0,
-               45.0,
-               "deg",
-               "Angular deflection",
-               "Largest angle between neighbouring triangles on curved surfaces. Keeps small radii smooth "
-               "where the linear deflection alone would allow coarse facets.",
-               "Tessellation",
-               {}},
+      numberParam(
+          "linear_deflection", 0.1, 0.001, 10.0, "mm",
+          {"Linear deflection",
+           "Largest distance allowed between the CAD surface and its triangles. Smaller values follow "
+           "curved walls more closely and give more triangles.",
+           "Tessellation"}),
+      numberParam(
+          "angular_deflection", 10.0, 1.0, 45.0, "deg",
+          {"Angular deflection",
+           "Largest angle between neighbouring triangles on curved surfaces. Keeps small radii smooth "
+           "where the linear deflection alone would allow coarse facets.",
+           "Tessellation"}),
   };
 }
 
@@ -38,17 +28,11 @@ ParamSchema makeSchema(bool withUnit)
   std::vector<ParamDef> defs = tessellationParams();
   if (withUnit)
     defs.push_back(
-        ParamDef{"unit",
-                 ParamType::Choice,
-                 std::string("mm"),
-                 std::nullopt,
-                 std::nullopt,
-                 "",
-                 "File unit",
-                 "The length unit the BREP file is written in. BREP does not record it: choose the "
-                 "unit of the program that wrote it (Spira converts to millimetres).",
-                 "Import",
-                 {"mm", "cm", "m", "in"}});
+        choiceParam("unit", "mm", {"mm", "cm", "m", "in"},
+                    {"File unit",
+                     "The length unit the BREP file is written in. BREP does not record it: choose "
+                     "the unit of the program that wrote it (Spira converts to millimetres).",
+                     "Import"}));
   return ParamSchema(std::move(defs));
 }
 

@@ -20,6 +20,7 @@ SpiralSettings domeSettings()
   s.h = 1.0;
   s.hMin = 0.9;
   s.hMax = 1.1;
+  s.layerMode = LayerMode::Floor;  // the thesis's count, which uniformHelixLayers computes
   return s;
 }
 

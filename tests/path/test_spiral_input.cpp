@@ -60,9 +60,6 @@ TEST(SpiralInput, RejectsBadSettings)
   s.heightTolerance = -0.1;
   EXPECT_TRUE(mentions(inputError(g, s), "tolerance"));
   s = mm1();
-  s.pointsPerRevolution = 2;
-  EXPECT_TRUE(mentions(inputError(g, s), "points per revolution"));
-  s = mm1();
   s.minRevolutionLength = -1.0;
   EXPECT_TRUE(mentions(inputError(g, s), "minimum revolution length"));
 }
@@ -170,24 +167,15 @@ TEST(SpiralInput, OrientsTheBuildDirectionUp)
   EXPECT_LT(p.normal.dot(Vec3(p.position.x(), p.position.y(), 0).normalized()), -0.99);
 }
 
-// 36 generatrices resampled to 360 points per revolution: blends lie on the chords between them.
-TEST(SpiralInput, ResamplesToThePointsPerRevolution)
+// The decomposer sets the points per revolution (its points_per_rev): the spiral lays one point
+// per generatrix and revolution, on the generatrix itself.
+TEST(SpiralInput, LaysOnePointPerGeneratrixAndRevolution)
 {
-  SpiralSettings s = mm1();
-  s.pointsPerRevolution = 360;
   NullProgress progress;
-  const SpiralResult r = buildSpiral(test::cylinder(50, 30, 36, 7), s, progress);
-  EXPECT_EQ(r.report.pointsPerRevolution, 360);
-  EXPECT_EQ(r.trajectory.size() % 360, 0u);
-  const double inner = 50.0 * std::cos(kPi / 36);
-  for (const TrajectoryPoint& p : r.trajectory.points) {
-    const double radius = p.position.head<2>().norm();
-    EXPECT_GE(radius, inner - 1e-9);
-    EXPECT_LE(radius, 50.0 + 1e-9);
-    if (p.generatrix % 10 == 0) {
-      EXPECT_NEAR(radius, 50.0, 1e-9);  // an input generatrix
-    }
-  }
+  const SpiralResult r = buildSpiral(test::cylinder(50, 30, 36, 7), mm1(), progress);
+  EXPECT_EQ(r.report.pointsPerRevolution, 36);
+  EXPECT_EQ(r.trajectory.size() % 36, 0u);
+  for (const TrajectoryPoint& p : r.trajectory.points) EXPECT_NEAR(p.position.head<2>().norm(), 50.0, 1e-9);
 }
 
 TEST(SpiralInput, StopsWhenCancelled)

@@ -93,6 +93,7 @@ TEST(SpiralOpenPart, TooDifferentGeneratricesAreInfeasibleWithEveryViolationList
   s.h = 1.0;
   s.hMin = 0.9;
   s.hMax = 1.1;
+  s.layerMode = LayerMode::Floor;  // n = floor(min L / h_min): the long generatrices leave the window
   const double limit = 1.1 + 0.005;
   std::vector<int> violating;
   for (int i = 0; i < n; ++i) {

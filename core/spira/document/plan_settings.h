@@ -6,6 +6,8 @@
 #include <nlohmann/json_fwd.hpp>
 
 #include "spira/plugin/parameter.h"
+#include "spira/plugin/settings_section.h"
+#include "spira/plugin/strategy_name.h"
 
 namespace spira {
 
@@ -14,10 +16,10 @@ namespace spira {
 // built-in sections below. Values are stored as the user set them; missing keys take the
 // schema default when read through ParamSet::withDefaults.
 struct PlanSettings {
-  static constexpr const char* kProcessSection = "process";  // process window (speeds, heights)
-  static constexpr const char* kSpiralSection = "spiral";    // spiral construction
-  static constexpr const char* kDefaultDecomposer = "decomposer.isovalue";
-  static constexpr const char* kDefaultClosureFinder = "closure.max_min_geodesic";
+  static constexpr const char* kProcessSection = kProcessSectionName;  // process window (speeds, heights)
+  static constexpr const char* kSpiralSection = kSpiralSectionName;    // spiral construction
+  static constexpr const char* kDefaultDecomposer = kDefaultDecomposerId;
+  static constexpr const char* kDefaultClosureFinder = kDefaultClosureFinderId;
 
   std::string decomposerId = kDefaultDecomposer;
   std::string closureFinderId = kDefaultClosureFinder;

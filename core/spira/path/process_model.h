@@ -25,21 +25,25 @@ enum class HeightModel {
   Calibration,
 };
 
+// The thesis's wall width at 2.3 m/min (Fig. 4.3), mm.
+inline constexpr double kDefaultBeadWidth = 5.2;
+
+// The default limits are the product's (plan_schemas.cpp); unlimited speeds are set explicitly.
 struct ProcessLimits {
-  double travelSpeedMin = 0.0;                                      // mm/s
-  double travelSpeedMax = std::numeric_limits<double>::infinity();  // mm/s
-  double wireFeedMin = 0.0;                                         // mm/s
-  double wireFeedMax = std::numeric_limits<double>::infinity();     // mm/s
+  double travelSpeedMin = 0.5;            // mm/s
+  double travelSpeedMax = 50.0;           // mm/s
+  double wireFeedMin = 0.5 * 1000 / 60;   // mm/s (0.5 m/min)
+  double wireFeedMax = 20.0 * 1000 / 60;  // mm/s (20 m/min)
 };
 
 struct ProcessSettings {
   ProcessMode mode = ProcessMode::Synergic;
   HeightModel model = HeightModel::MassConservation;
-  double wireDiameter = 1.0;        // d, mm (the thesis's G3Si wire)
-  double beadWidth = 5.2;           // W, mm (stabilised wall width at 2.3 m/min, thesis Fig. 4.3)
-  double wireFeed = 2300.0 / 60.0;  // mm/s: held in synergic mode; the table's wire feed
-  double travelSpeed = 5.0;         // mm/s: held in constant-travel-speed mode
-  CalibrationTable calibration;     // HeightModel::Calibration only
+  double wireDiameter = 1.0;             // d, mm (the thesis's G3Si wire)
+  double beadWidth = kDefaultBeadWidth;  // W, mm
+  double wireFeed = 2300.0 / 60.0;       // mm/s: held in synergic mode; the table's wire feed
+  double travelSpeed = 5.0;              // mm/s: held in constant-travel-speed mode
+  CalibrationTable calibration;          // HeightModel::Calibration only
   ProcessLimits limits;
   // Speeds beyond the limits are reported and, when set, clamped to the limit, so the channels stay
   // executable (the ramps' seam points near a closure point ask for a nearly zero deposit, i.e. an

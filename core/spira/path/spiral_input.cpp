@@ -5,7 +5,6 @@
 #include <string>
 
 #include "spira/base/error.h"
-#include "spira/path/resample_generatrices.h"
 #include "spira/path/surface_normals.h"
 
 namespace spira {
@@ -87,10 +86,6 @@ void validateSpiralSettings(const SpiralSettings& s)
   if (!std::isfinite(s.heightTolerance) || s.heightTolerance < 0.0)
     throw InputError("the height tolerance must be zero or positive, not " + str(s.heightTolerance),
                      "use a small fraction of h such as 0.01");
-  if (s.pointsPerRevolution < 0 || s.pointsPerRevolution == 1 || s.pointsPerRevolution == 2)
-    throw InputError("points per revolution must be 0 (one per generatrix) or at least 3, not " +
-                         std::to_string(s.pointsPerRevolution),
-                     "use 0, or 3 and more (360 is typical)");
   if (!std::isfinite(s.minRevolutionLength) || s.minRevolutionLength < 0.0)
     throw InputError(
         "the minimum revolution length must be zero or positive, not " + str(s.minRevolutionLength),
@@ -101,14 +96,12 @@ PreparedGeneratrices prepareGeneratrices(const Generatrices& g, const SpiralSett
 {
   checkLines(g, s);
   PreparedGeneratrices out;
-  const bool resample =
-      s.pointsPerRevolution > 0 && static_cast<size_t>(s.pointsPerRevolution) != g.lines.size();
   if (!g.normals.empty()) {
     checkNormals(g);
     bool unit = true;
     for (const auto& line : g.normals)
       for (const Vec3& nk : line) unit = unit && std::abs(nk.squaredNorm() - 1.0) < 1e-12;
-    if (unit && !resample) {
+    if (unit) {
       out.source_ = &g;
       return out;
     }
@@ -122,7 +115,6 @@ PreparedGeneratrices prepareGeneratrices(const Generatrices& g, const SpiralSett
     for (auto& line : pg.normals)
       for (Vec3& nk : line) nk.normalize();
   }
-  if (resample) pg = resampleGeneratrices(pg, s.pointsPerRevolution);
   return out;
 }
 

@@ -26,8 +26,7 @@ void validateSpiralSettings(const SpiralSettings& s);
 // Throws InputError for fewer than 3 generatrices, a generatrix with fewer than 2 points, zero
 // length or non-finite coordinates, normals whose shape differs from the lines', zero or
 // non-finite normals, and (closed parts) a generatrix ending farther than h_min / 2 from the
-// closure point. Normalises the normals, estimates them when none are given, resamples to
-// s.pointsPerRevolution when set.
+// closure point. Normalises the normals, estimates them when none are given.
 PreparedGeneratrices prepareGeneratrices(const Generatrices& g, const SpiralSettings& s);
 
 }  // namespace spira

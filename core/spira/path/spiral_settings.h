@@ -1,5 +1,7 @@
 #pragma once
 
+#include "spira/base/units.h"
+#include "spira/path/process_model.h"
 #include "spira/path/startup_profile.h"
 
 namespace spira {
@@ -35,10 +37,7 @@ struct SpiralSettings {
   double h = 2.0;     // nominal deposit height, mm
   double hMin = 1.8;  // thinnest deposit the process lays, mm
   double hMax = 2.2;  // thickest deposit, mm
-  // 0: one point per generatrix and revolution. Otherwise the generatrices are first resampled to
-  // this many by blending neighbours (see resample_generatrices.h).
-  int pointsPerRevolution = 0;
-  LayerMode layerMode = LayerMode::Floor;
+  LayerMode layerMode = LayerMode::Centered;
   // UniformHelix by default: with ToNominal every seam rises d - 0.9 h in one segment (at ±10 %;
   // 0.1 h in centred mode), and its true height d cos(theta) leaves the window wherever
   // neighbouring generatrices are close (1-degree dome: within about r = 11 h of the closure point).
@@ -51,10 +50,10 @@ struct SpiralSettings {
   // r = 1.6 h).
   double heightTolerance = 0.005;
   // Closed parts: trailing revolutions shorter than this (mm) are replaced by the closure point
-  // alone, so the path does not end with many copies of it. 0 means h, which folds only the last
-  // revolution (the closure point itself); about pi times the bead width also folds the rings
-  // narrower than the bead.
-  double minRevolutionLength = 0.0;
+  // alone, so the path does not end with many copies of it. The default, pi times the default bead
+  // width, folds the rings narrower than the bead; 0 means h, which folds only the last revolution
+  // (the closure point itself).
+  double minRevolutionLength = kPi * kDefaultBeadWidth;
 };
 
 }  // namespace spira

@@ -27,8 +27,7 @@ DocumentMotion solveDocumentMotion(const DocumentState& snapshot, const Trajecto
                              ". Choose a cell with a 6-axis arm.");
       return out;
     }
-    MotionSettings settings = motionSettingsFrom(snapshot.settings->section(PlanSettings::kProcessSection),
-                                                 snapshot.settings->section(PlanSettings::kSpiralSection));
+    MotionSettings settings = motionSettingsFrom(readPlanSections(snapshot.settings->params));
     settings.substrateZ = substrateZ;
     settings.resolveCollisions = resolveCollisions;
     settings.part = snapshot.part ? snapshot.part->mesh.get() : nullptr;

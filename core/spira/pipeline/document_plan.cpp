@@ -16,6 +16,7 @@
 #include "spira/planning/plan_files.h"
 #include "spira/planning/plan_schemas.h"
 #include "spira/planning/planner.h"
+#include "spira/planning/settings_sections.h"
 
 namespace spira {
 
@@ -120,7 +121,7 @@ DocumentPlan planDocument(const DocumentState& snapshot, const PluginRegistry& r
   out.windowViolations = plan.spiral.report.violations.size();
   out.limitViolations = plan.process.violations.size();
 
-  const SpiralSettings window = spiralSettingsFrom(settings.section(PlanSettings::kSpiralSection));
+  const SpiralSettings window = readPlanSections(settings.params).spiral;
   nlohmann::json full = planReportJson(plan, settings.decomposerId);
   out.report = full;
   if (out.advice) out.report["advice"] = adviceJson(*out.advice);
@@ -194,15 +195,14 @@ DocumentPlan planDocument(const DocumentState& snapshot, const PluginRegistry& r
 std::vector<SettingsProblem> settingsProblems(const PlanSettings& settings)
 {
   std::vector<SettingsProblem> out;
-  try {
-    spiralSettingsFrom(settings.section(PlanSettings::kSpiralSection));
-  } catch (const Error& e) {
-    out.push_back({e.what(), e.hint()});
-  }
-  try {
-    processSettingsFrom(settings.section(PlanSettings::kProcessSection));
-  } catch (const Error& e) {
-    out.push_back({e.what(), e.hint()});
+  // Each section on its own, so that a problem in one does not hide one in the other.
+  for (const SettingsSection& section : planSections()) {
+    const std::string name(section.name);
+    try {
+      readPlanSections({{name, settings.section(name)}});
+    } catch (const Error& e) {
+      out.push_back({e.what(), e.hint()});
+    }
   }
   return out;
 }

@@ -146,12 +146,12 @@ MotionParams motionParamsFor(const RobotCell& cell, const MotionSettings& settin
   return p;
 }
 
-MotionSettings motionSettingsFrom(const ParamSet& process, const ParamSet& spiral)
+MotionSettings motionSettingsFrom(const PlanSections& sections)
 {
   MotionSettings m;
-  m.process = processSettingsFrom(process);
+  m.process = sections.process;
   m.beadWidth = m.process.beadWidth;
-  const SpiralSettings s = spiralSettingsFrom(spiral);
+  const SpiralSettings& s = sections.spiral;
   m.window = DepositWindow{s.hMin, s.hMax, s.heightTolerance * s.h};
   return m;
 }

@@ -9,6 +9,7 @@
 #include "spira/path/joint_trajectory.h"
 #include "spira/path/process_model.h"
 #include "spira/path/trajectory.h"
+#include "spira/planning/plan_schemas.h"
 #include "spira/plugin/parameter.h"
 #include "spira/robotcell/robot_cell.h"
 
@@ -37,10 +38,9 @@ struct MotionSettings {
 // The motion parameters of a cell and these settings.
 MotionParams motionParamsFor(const RobotCell& cell, const MotionSettings& settings);
 
-// Settings from the plan's "process" and "spiral" sections (plan_schemas.h): bead width, process
-// (allow_slowdown and the height model) and the deposit window; the rest at their defaults.
-// Throws InputError as processSettingsFrom and spiralSettingsFrom do.
-MotionSettings motionSettingsFrom(const ParamSet& process, const ParamSet& spiral);
+// Settings from the plan's spiral and process sections: bead width, process (allow_slowdown and
+// the height model) and the deposit window; the rest at their defaults.
+MotionSettings motionSettingsFrom(const PlanSections& sections);
 
 // The robot side of a plan: the torch checked (and, when allowed, tilted) against the deposit so
 // far and the substrate, then every point solved on the cell.

@@ -10,6 +10,7 @@
 #include "spira/planning/crotch_flags.h"
 #include "spira/planning/level_base.h"
 #include "spira/planning/plan_schemas.h"
+#include "spira/plugin/settings_section.h"
 #include "spira/plugin/strategy_name.h"
 
 namespace spira {
@@ -61,8 +62,8 @@ class Trial {
     PlanRequest r = request_;
     r.decomposerId = strategy;
     if (window) {
-      r.params["spiral"].set("h_min", window->hMin);
-      r.params["spiral"].set("h_max", window->hMax);
+      r.params[kSpiralSectionName].set("h_min", window->hMin);
+      r.params[kSpiralSectionName].set("h_max", window->hMax);
     }
     return r;
   }
@@ -120,8 +121,8 @@ PlanAdvice adviseChange(const PluginRegistry& registry, const PlanRequest& reque
                         Progress& progress, int maxPlans)
 {
   PlanAdvice advice;
-  auto it = request.params.find("spiral");
-  const SpiralSettings settings = spiralSettingsFrom(it == request.params.end() ? ParamSet() : it->second);
+  const PlanSections sections = readPlanSections(request.params);
+  const SpiralSettings& settings = sections.spiral;
   std::string tooWide;
   const std::optional<Window> window = failed ? measuredWindow(*failed, settings, tooWide) : std::nullopt;
   Trial trial(registry, request, progress, maxPlans);
@@ -162,10 +163,7 @@ PlanAdvice adviseChange(const PluginRegistry& registry, const PlanRequest& reque
     }
   advice.tried = trial.tried;
   if (failed) {
-    const auto process = request.params.find("process");
-    const double beadWidth =
-        processSettingsFrom(process == request.params.end() ? ParamSet() : process->second).beadWidth;
-    const std::vector<CrotchFlags> crotches = flagsAtCrotches(*failed, beadWidth);
+    const std::vector<CrotchFlags> crotches = flagsAtCrotches(*failed, sections.process.beadWidth);
     size_t atCrotches = 0;
     for (const CrotchFlags& c : crotches) atCrotches += c.flagged;
     advice.cause = crotchText(crotches, failed->deposits.flags.size(), settings.hMax);
@@ -178,9 +176,9 @@ PlanAdvice adviseSmallerDeposit(const PluginRegistry& registry, const PlanReques
                                 const TooShortError& refusal, Progress& progress)
 {
   PlanAdvice advice;
-  const auto it = request.params.find("spiral");
+  const auto it = request.params.find(kSpiralSectionName);
   const ParamSet given = it == request.params.end() ? ParamSet() : it->second;
-  const SpiralSettings s = spiralSettingsFrom(given);
+  const SpiralSettings s = readPlanSections(request.params).spiral;
   if (!(refusal.needed() > 0.0) || !(refusal.length() > 0.0)) return advice;
   // At a fixed relative window the ramps' length is proportional to h, and what is left of the
   // wall must be a whole number of layers inside the window. Candidates run down the 0.05 mm grid
@@ -198,13 +196,13 @@ PlanAdvice adviseSmallerDeposit(const PluginRegistry& registry, const PlanReques
     const double rest = length - rampsPerH * h;
     if (rest < 0.99 * low * h || std::ceil(rest / (high * h)) * low * h > 1.01 * rest) continue;
     PlanRequest r = request;
-    r.params["spiral"].set("h", h);
+    r.params[kSpiralSectionName].set("h", h);
     std::string flags = "--h " + significantText(h, 4);
     if (explicitWindow) {
       const double f = h / s.h;
       const double lo = std::floor(s.hMin * f / 0.01) * 0.01, hi = std::ceil(s.hMax * f / 0.01) * 0.01;
-      r.params["spiral"].set("h_min", lo);
-      r.params["spiral"].set("h_max", hi);
+      r.params[kSpiralSectionName].set("h_min", lo);
+      r.params[kSpiralSectionName].set("h_max", hi);
       flags += " --h-min " + significantText(lo, 4) + " --h-max " + significantText(hi, 4);
     }
     const std::string change =

@@ -36,9 +36,9 @@ struct Settings {
 Settings settingsFor(const PluginRegistry& registry, const PlanRequest& request)
 {
   Settings s;
-  s.spiral = spiralSettingsFrom(paramsFor(request, "spiral"));
-  s.process = processSettingsFrom(paramsFor(request, "process"));
-  if (s.spiral.minRevolutionLength <= 0.0) s.spiral.minRevolutionLength = kPi * s.process.beadWidth;
+  PlanSections sections = readPlanSections(request.params);
+  s.spiral = sections.spiral;
+  s.process = std::move(sections.process);
   s.decomposer = &registry.decomposer(request.decomposerId);
   s.decomposerParams = paramsFor(request, request.decomposerId).withDefaults(s.decomposer->schema());
   s.decomposer->schema().validate(s.decomposerParams);
@@ -131,10 +131,6 @@ void finishMonoBranch(const PluginRegistry& registry, const PlanRequest& request
                        &out.field};
   input.window = {settings.spiral.hMin, settings.spiral.hMax,
                   settings.spiral.heightTolerance * settings.spiral.h, settings.process.beadWidth};
-  std::string why;
-  if (!decomposer.accepts(input, &why))
-    throw InputError(decomposer.id() + " cannot plan this part: " + why,
-                     "choose another strategy with --strategy");
   SubProgress dp(progress, 0.35, 0.8, "generatrices");
   DecomposeResult decomposition = decomposer.decompose(input, settings.decomposerParams, dp);
   out.generatrices = std::move(decomposition.generatrices);

@@ -15,12 +15,13 @@
 #include "spira/plugin/closure_finder.h"
 #include "spira/plugin/parameter.h"
 #include "spira/plugin/plugin_registry.h"
+#include "spira/plugin/strategy_name.h"
 #include "spira/verify/deposit_check.h"
 
 namespace spira {
 
 // Everything a plan is computed from but the surface. `params` holds the values per plugin id and
-// per settings section ("spiral", "process"), as PlanSettings stores them.
+// per settings section (settings_sections.h), as PlanSettings stores them.
 struct PlanChoices {
   double substrateZ = 0.0;
   int lowerLoopOverride = -1;
@@ -30,8 +31,8 @@ struct PlanChoices {
   // A watertight thin-walled solid is planned on its mid-surface (docs/thin-walled-solids.md);
   // false refuses it like any closed mesh.
   bool midSurfaceOfSolid = true;
-  std::string decomposerId = "decomposer.isovalue";
-  std::string closureFinderId = "closure.max_min_geodesic";
+  std::string decomposerId = kDefaultDecomposerId;
+  std::string closureFinderId = kDefaultClosureFinderId;
   std::map<std::string, ParamSet> params;
 };
 

@@ -80,8 +80,7 @@ StrategyOutcome planar(const PlanRequest& request, const Comparison& c, Progress
     // A thin-walled solid is sliced on the mid-surface its CTPP plans run on.
     std::optional<SolidSurface> solid;
     if (request.midSurfaceOfSolid && isClosedSolid(request.report)) {
-      auto it = request.params.find("process");
-      const double bead = processSettingsFrom(it == request.params.end() ? ParamSet() : it->second).beadWidth;
+      const double bead = readPlanSections(request.params).process.beadWidth;
       solid = plannableMidSurface(request.mesh, bead);
     }
     const TriangleMesh& mesh = solid ? *solid->wall.midSurface : request.mesh;
@@ -121,8 +120,7 @@ nlohmann::json orNull(bool has, double v)
 Comparison compareStrategies(const PluginRegistry& registry, const PlanRequest& request, Progress& progress)
 {
   Comparison c;
-  auto it = request.params.find("spiral");
-  const SpiralSettings window = spiralSettingsFrom(it == request.params.end() ? ParamSet() : it->second);
+  const SpiralSettings window = readPlanSections(request.params).spiral;
   c.h = window.h;
   c.hMin = window.hMin;
   c.hMax = window.hMax;

@@ -46,8 +46,15 @@ class DecomposerPlugin : public Plugin {
   PluginKind kind() const override { return PluginKind::Decomposer; }
   // Whether this strategy can handle the part; when not, `why` says why in plain words.
   virtual bool accepts(const DecomposeInput& input, std::string* why) const = 0;
-  virtual DecomposeResult decompose(const DecomposeInput& input, const ParamSet& params,
-                                    Progress& progress) const = 0;
+  // The one entry point: throws InputError when accepts() refuses the part or when `params`
+  // (completed with the schema's defaults) do not fit the schema, then calls decomposeChecked().
+  DecomposeResult decompose(const DecomposeInput& input, const ParamSet& params, Progress& progress) const;
+
+ protected:
+  // Called by decompose() only, so a strategy checks neither again: accepts(input) is true and
+  // `values` holds every key of schema(), each inside its bounds or choices.
+  virtual DecomposeResult decomposeChecked(const DecomposeInput& input, const ParamSet& values,
+                                           Progress& progress) const = 0;
 };
 
 }  // namespace spira

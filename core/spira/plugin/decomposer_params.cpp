@@ -4,32 +4,18 @@ namespace spira {
 
 ParamDef pointsPerRevolutionParam(const std::string& how)
 {
-  ParamDef d;
-  d.key = "points_per_rev";
-  d.type = ParamType::Int;
-  d.defaultValue = std::int64_t{360};
-  d.min = 8;
-  d.max = 20000;
-  d.label = "Points per revolution";
-  d.tooltip = "Number of generatrices, i.e. path points per revolution. " + how;
-  d.category = "Discretisation";
-  return d;
+  return integerParam("points_per_rev", 360, 8, 20000,
+                      {"Points per revolution",
+                       "Number of generatrices, i.e. path points per revolution. " + how, "Discretisation"});
 }
 
 ParamDef levelSpacingParam(const std::string& how)
 {
-  ParamDef d;
-  d.key = "level_spacing";
-  d.type = ParamType::Double;
-  d.defaultValue = 0.0;
-  d.min = 0.0;
-  d.max = 1000.0;
-  d.unit = "mm";
-  d.label = "Point spacing";
-  d.tooltip = "Mean distance on the surface between consecutive points of each generatrix. " + how +
-              " 0 uses the mesh's mean edge length, the finest spacing the mesh resolves.";
-  d.category = "Discretisation";
-  return d;
+  return numberParam("level_spacing", 0.0, 0.0, 1000.0, "mm",
+                     {"Point spacing",
+                      "Mean distance on the surface between consecutive points of each generatrix. " + how +
+                          " 0 uses the mesh's mean edge length, the finest spacing the mesh resolves.",
+                      "Discretisation"});
 }
 
 bool hasPlannableEdges(const DecomposeInput& input, std::string* why)

@@ -32,6 +32,25 @@ struct ParamDef {
   std::vector<std::string> choices;  // for Choice: the allowed values
 };
 
+// What a parameter shows the user: its label, tooltip and panel group (see ParamDef).
+struct ParamText {
+  std::string label;
+  std::string tooltip;
+  std::string category;
+};
+
+// The one way to declare a parameter: each builder fills the fields its type uses.
+ParamDef numberParam(std::string key, double defaultValue, double min, double max, std::string unit,
+                     ParamText text);
+ParamDef integerParam(std::string key, std::int64_t defaultValue, std::int64_t min, std::int64_t max,
+                      ParamText text);
+ParamDef choiceParam(std::string key, std::string defaultValue, std::vector<std::string> choices,
+                     ParamText text);
+ParamDef flagParam(std::string key, bool defaultValue, ParamText text);
+ParamDef textParam(std::string key, std::string defaultValue, ParamText text);
+// A file path, empty by default.
+ParamDef pathParam(std::string key, ParamText text);
+
 class ParamSet;
 
 // The ordered list of a plugin's parameters.
