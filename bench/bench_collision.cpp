@@ -24,6 +24,8 @@
 #include <vector>
 
 #include "builtin_plugins.h"
+#include "collision/mesh_builders.h"
+#include "collision/plan_builders.h"
 #include "spira/base/progress.h"
 #include "spira/base/units.h"
 #include "spira/collision/collision_resolver.h"
@@ -36,38 +38,6 @@
 using namespace spira;
 
 namespace {
-
-Trajectory helix(double radius, double layer, int revolutions, int perRevolution)
-{
-  Trajectory plan;
-  const auto at = [&](int k) {
-    const double phi = 2.0 * kPi * k / perRevolution;
-    return Vec3(radius * std::cos(phi), radius * std::sin(phi), 1.0 + layer * k / perRevolution);
-  };
-  for (int k = 0; k < revolutions * perRevolution; ++k) {
-    TrajectoryPoint p;
-    const double phi = 2.0 * kPi * k / perRevolution;
-    p.position = at(k);
-    p.normal = Vec3(std::cos(phi), std::sin(phi), 0.0);
-    const Vec3 chord = at(k + 1) - at(k);
-    p.tangent = (chord - chord.dot(p.normal) * p.normal).normalized();
-    p.build = p.normal.cross(p.tangent);
-    p.revolution = k / perRevolution;
-    p.height = layer;
-    plan.points.push_back(p);
-  }
-  return plan;
-}
-
-TriangleMesh box(const Vec3& lo, const Vec3& hi)
-{
-  TriangleMesh m;
-  for (int k = 0; k < 8; ++k)
-    m.vertices.emplace_back(k & 1 ? hi.x() : lo.x(), k & 2 ? hi.y() : lo.y(), k & 4 ? hi.z() : lo.z());
-  m.faces = {{0, 2, 1}, {1, 2, 3}, {4, 5, 6}, {5, 7, 6}, {0, 1, 4}, {1, 5, 4},
-             {2, 6, 3}, {3, 6, 7}, {0, 4, 2}, {2, 4, 6}, {1, 3, 5}, {3, 7, 5}};
-  return m;
-}
 
 struct Timer {
   std::chrono::steady_clock::time_point wall = std::chrono::steady_clock::now();
@@ -193,10 +163,10 @@ int main(int argc, char** argv)
     runDome();
     return 0;
   }
-  const Trajectory plan = helix(50.0, 1.0, 100, 360);
+  const Trajectory plan = test::helixPlan(50.0, 1.0, 100, 360);
   CollisionScene scene;
   scene.setSubstratePlane(Vec3::Zero(), Vec3::UnitZ());
-  scene.addObstacle("table", box(Vec3(-400, -400, -40), Vec3(400, 400, -5)));
+  scene.addObstacle("table", test::boxMesh(Vec3(-400, -400, -40), Vec3(400, 400, -5)));
   run("helix R50, 100 rev x 360, torch along b", plan, scene, true);
 
   Trajectory leaning = plan;
@@ -204,7 +174,7 @@ int main(int argc, char** argv)
   run("same, torch leaning 20 deg inwards", leaning, scene, true);
 
   CollisionScene clamped = scene;
-  clamped.addObstacle("clamp", box(Vec3(64, -6, 0), Vec3(90, 6, 150)));
+  clamped.addObstacle("clamp", test::boxMesh(Vec3(64, -6, 0), Vec3(90, 6, 150)));
   run("same, with a clamp beside the wall", plan, clamped, false);
   runDome();
   return 0;

@@ -6,8 +6,10 @@
 #include <functional>
 #include <vector>
 
+#include "best_of.h"
 #include "builtin_plugins.h"
 #include "spira/base/units.h"
+#include "spira/contour/contour_loop.h"
 #include "spira/contour/isovalue_decomposition.h"
 #include "spira/mesh/mesh_primitives.h"
 #include "spira/mesh/mesh_report.h"
@@ -16,24 +18,6 @@
 namespace {
 
 using namespace spira;
-
-double bestOf(int runs, const std::function<void()>& f)
-{
-  double best = 1e300;
-  for (int i = 0; i < runs; ++i) {
-    const auto t0 = std::chrono::steady_clock::now();
-    f();
-    best = std::min(best, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
-  }
-  return best;
-}
-
-double lineLength(const Polyline& l)
-{
-  double s = 0;
-  for (size_t i = 1; i < l.size(); ++i) s += (l[i] - l[i - 1]).norm();
-  return s;
-}
 
 void run(const char* name, const TriangleMesh& mesh, const std::vector<double>& field, bool open,
          double spacing, double expectedLength)
@@ -63,8 +47,8 @@ void run(const char* name, const TriangleMesh& mesh, const std::vector<double>& 
   });
   double lo = 1e300, hi = 0;
   for (const auto& l : d.generatrices.lines) {
-    lo = std::min(lo, lineLength(l));
-    hi = std::max(hi, lineLength(l));
+    lo = std::min(lo, polylineLength(l, false));
+    hi = std::max(hi, polylineLength(l, false));
   }
   std::printf(
       "%-10s %7zu faces  %3zu levels  %6zu contour points  extract %6.1f ms  decompose(360 pts) %6.1f ms\n",
@@ -87,8 +71,8 @@ void runPlugin(const char* name, const TriangleMesh& mesh, double expectedLength
   const double t = bestOf(3, [&] { res = plugin.decompose(in, ParamSet{}, progress); });
   double lo = 1e300, hi = 0;
   for (const auto& l : res.generatrices.lines) {
-    lo = std::min(lo, lineLength(l));
-    hi = std::max(hi, lineLength(l));
+    lo = std::min(lo, polylineLength(l, false));
+    hi = std::max(hi, polylineLength(l, false));
   }
   std::printf(
       "%-10s plugin with its own field: %6.1f ms; generatrix length %.4f .. %.4f mm, expected %.4f mm "

@@ -6,9 +6,11 @@
 #include <functional>
 #include <vector>
 
+#include "best_of.h"
 #include "builtin_plugins.h"
 #include "decomposer_envelope/envelope_projection.h"
 #include "spira/base/units.h"
+#include "spira/contour/contour_loop.h"
 #include "spira/mesh/mesh_primitives.h"
 #include "spira/mesh/mesh_report.h"
 #include "spira/plugin/plugin_registry.h"
@@ -18,30 +20,12 @@ namespace {
 
 using namespace spira;
 
-double bestOf(int runs, const std::function<void()>& f)
-{
-  double best = 1e300;
-  for (int i = 0; i < runs; ++i) {
-    const auto t0 = std::chrono::steady_clock::now();
-    f();
-    best = std::min(best, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
-  }
-  return best;
-}
-
-double lineLength(const Polyline& l)
-{
-  double s = 0;
-  for (size_t i = 1; i < l.size(); ++i) s += (l[i] - l[i - 1]).norm();
-  return s;
-}
-
 // The largest relative error of the generatrix lengths against `expected(m)`.
 double worstError(const Generatrices& g, const std::function<double(size_t)>& expected)
 {
   double worst = 0;
   for (size_t m = 0; m < g.lines.size(); ++m)
-    worst = std::max(worst, std::abs(lineLength(g.lines[m]) - expected(m)) / expected(m));
+    worst = std::max(worst, std::abs(polylineLength(g.lines[m], false) - expected(m)) / expected(m));
   return worst;
 }
 

@@ -12,6 +12,7 @@
 #include "builtin_plugins.h"
 #include "decomposer_geodesic/geodesic_decomposition.h"
 #include "spira/base/units.h"
+#include "spira/contour/contour_loop.h"
 #include "spira/mesh/mesh_primitives.h"
 #include "spira/mesh/mesh_report.h"
 #include "spira/plugin/plugin_registry.h"
@@ -19,13 +20,6 @@
 namespace {
 
 using namespace spira;
-
-double lineLength(const Polyline& l)
-{
-  double s = 0;
-  for (size_t i = 1; i < l.size(); ++i) s += (l[i] - l[i - 1]).norm();
-  return s;
-}
 
 // `exact(line)`: the closed-form geodesic distance between the line's ends.
 void run(const char* name, const TriangleMesh& mesh, bool open, const std::optional<Vec3>& closure,
@@ -48,7 +42,7 @@ void run(const char* name, const TriangleMesh& mesh, bool open, const std::optio
   for (size_t i = 0; i < d.generatrices.lines.size(); ++i) {
     if (d.fillIn[i]) continue;
     const double e = exact(d.generatrices.lines[i]);
-    worst = std::max(worst, std::abs(lineLength(d.generatrices.lines[i]) - e) / e);
+    worst = std::max(worst, std::abs(polylineLength(d.generatrices.lines[i], false) - e) / e);
   }
   const geodesic::GeodesicStats& s = d.stats;
   std::printf("%-10s %7zu tri  %4zu lines  total %6.3f s  (guide %5.3f, paths %5.3f, coverage %5.3f)\n", name,

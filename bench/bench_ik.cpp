@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "motion/motion_fixtures.h"
 #include "spira/base/progress.h"
 #include "spira/base/units.h"
 #include "spira/kinematics/arm_ik.h"
@@ -22,20 +23,6 @@
 using namespace spira;
 
 namespace {
-
-// The bundled KR 16-2: $SPIRA_ROBOTS_DIR, else resources/robots of this source tree.
-std::string robotUrdf()
-{
-  namespace fs = std::filesystem;
-  std::vector<fs::path> candidates;
-  if (const char* dir = std::getenv("SPIRA_ROBOTS_DIR"))
-    candidates.push_back(fs::path(dir) / "kuka_kr16_2/robot.urdf");
-  candidates.push_back(fs::path(__FILE__).parent_path().parent_path() /
-                       "resources/robots/kuka_kr16_2/robot.urdf");
-  for (const fs::path& p : candidates)
-    if (fs::exists(p)) return p.string();
-  return candidates.front().string();
-}
 
 std::vector<Transform> spiralPoses(int points, int perTurn)
 {
@@ -65,7 +52,7 @@ double millis(std::chrono::steady_clock::duration d)
 
 int main(int argc, char** argv)
 {
-  const std::string urdf = argc > 1 ? argv[1] : robotUrdf();
+  const std::string urdf = argc > 1 ? argv[1] : test::motionRobotUrdf("kuka_kr16_2");
   const ArmIk ik(KinematicChain::fromUrdfFile(urdf, "base_link", "tool0"));
   const int points = 100000;
   const std::vector<Transform> poses = spiralPoses(points, 2000);

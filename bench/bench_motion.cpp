@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "motion/motion_fixtures.h"
 #include "spira/base/progress.h"
 #include "spira/base/units.h"
 #include "spira/motion/motion_solver.h"
@@ -24,38 +25,6 @@
 using namespace spira;
 
 namespace {
-
-std::string robotUrdf()
-{
-  namespace fs = std::filesystem;
-  std::vector<fs::path> candidates;
-  if (const char* dir = std::getenv("SPIRA_ROBOTS_DIR"))
-    candidates.push_back(fs::path(dir) / "kuka_kr16_2/robot.urdf");
-  candidates.push_back(fs::path(__FILE__).parent_path().parent_path() /
-                       "resources/robots/kuka_kr16_2/robot.urdf");
-  for (const fs::path& p : candidates)
-    if (fs::exists(p)) return p.string();
-  return candidates.front().string();
-}
-
-Trajectory dome(double r, double polarEndDeg, int turns, int perTurn)
-{
-  Trajectory path;
-  const int n = turns * perTurn;
-  for (int k = 0; k < n; ++k) {
-    const double a = 2 * kPi * k / perTurn;
-    const double polar = degToRad(90.0 - (90.0 - polarEndDeg) * k / n);
-    TrajectoryPoint p;
-    p.normal = Vec3(std::sin(polar) * std::cos(a), std::sin(polar) * std::sin(a), std::cos(polar));
-    p.position = r * p.normal;
-    p.tangent = Vec3(-std::sin(a), std::cos(a), 0);
-    p.build = p.normal.cross(p.tangent);
-    p.revolution = k / perTurn;
-    p.travelSpeed = 10.0;
-    path.points.push_back(p);
-  }
-  return path;
-}
 
 Trajectory cylinder(double r, double pitch, int turns, int perTurn)
 {
@@ -145,7 +114,7 @@ bool runCase(const char* name, const ArmIk& ik, const ControllerConvention& c, c
 
 int main()
 {
-  ArmIk ik(KinematicChain::fromUrdfFile(robotUrdf(), "base_link", "tool0"));
+  ArmIk ik(KinematicChain::fromUrdfFile(test::motionRobotUrdf("kuka_kr16_2"), "base_link", "tool0"));
   const ControllerConvention convention(Controller::KukaKrc4, ik.chain());
   convention.applyTo(ik);
   JointPathSetup setup;
@@ -160,8 +129,10 @@ int main()
       "bench_motion: KUKA KR 16-2, 100 revolutions x 360 points, cable twist limit 120 deg, defaults "
       "otherwise\n");
   bool met = true;
-  met &= runCase("hemisphere R150, straight torch", ik, convention, dome(150, 50, 100, 360), setup);
-  met &= runCase("hemisphere R150, 36 deg gooseneck", ik, convention, dome(150, 50, 100, 360), gooseneck);
+  met &=
+      runCase("hemisphere R150, straight torch", ik, convention, test::domeSpiral(150, 50, 100, 360), setup);
+  met &= runCase("hemisphere R150, 36 deg gooseneck", ik, convention, test::domeSpiral(150, 50, 100, 360),
+                 gooseneck);
   met &= runCase("cylinder R100, straight torch", ik, convention, cylinder(100, 2, 100, 360), setup);
   std::printf("  target: optimised solve under 3 s CPU on every plan -> %s\n", met ? "met" : "NOT met");
   return 0;

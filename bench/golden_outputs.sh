@@ -33,6 +33,8 @@ python3 - "$work" "$root" <<'PY'
 import hashlib, json, os, re, sys
 work, root = sys.argv[1], sys.argv[2]
 dated = ("report.json", "spira_part.src", "SPIRA_PART.ls")  # their .spira-set.json hashes cover timings or dates
+# Keys report.json gained in the pipeline redesign (issue 16): the spiral's window and the motion's wall time.
+added = ("h", "h_min", "h_max", "height_tolerance_mm", "collapsed_revolutions", "seconds")
 def scrub(v):
     if isinstance(v, dict):
         return {k: scrub(x) for k, x in v.items()
@@ -50,7 +52,10 @@ for dirpath, _, names in sorted(os.walk(work)):
         path = os.path.join(dirpath, name)
         data = open(path, "rb").read()
         if name.endswith(".json"):
-            data = json.dumps(scrub(json.loads(data)), sort_keys=True).encode()
+            j = scrub(json.loads(data))
+            if name == "report.json":
+                j = {k: v for k, v in j.items() if k not in added}
+            data = json.dumps(j, sort_keys=True).encode()
         else:
             text = data.decode("latin-1").replace(work, "WORK").replace(root, "ROOT")
             text = re.sub(r"DATE \S+\s+TIME \S+;", "DATE D TIME T;", text)

@@ -14,6 +14,7 @@
 #include "spira/document/document.h"
 #include "spira/document/plan_report.h"
 #include "spira/pipeline/plan_motion.h"
+#include "spira/pipeline/planned_path.h"
 #include "spira/pipeline/prep_schema.h"
 #include "spira/pipeline/sub_paths.h"
 #include "spira/planning/joints_csv.h"
@@ -70,13 +71,14 @@ ExportSource projectSource(const fs::path& file)
   Document doc;
   doc.open(file);
   ExportSource s;
-  const std::shared_ptr<const Trajectory>& planned = doc.results().process;
-  if (!planned || planned->empty())
+  const PlannedPath planned = plannedPathOf(doc.results());
+  if (!planned.trajectory || planned.trajectory->empty())
     throw InputError(
         "the project '" + file.string() + "' holds no planned trajectory",
         "plan it first (Plan in Spira), save it, then export; or run 'spira-cli plan PART -o DIR' "
         "and export DIR");
-  s.trajectory = *planned;
+  s.trajectory = *planned.trajectory;
+  s.plannedCollision = planned.collision;
   if (doc.cell()) {
     s.cell = *doc.cell();
     s.cellName = doc.cell()->name;

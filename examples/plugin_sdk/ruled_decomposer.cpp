@@ -73,12 +73,12 @@ bool RuledDecomposer::accepts(const DecomposeInput& input, std::string* why) con
   return false;
 }
 
-DecomposeResult RuledDecomposer::decompose(const DecomposeInput& input, const ParamSet& params,
-                                           Progress& progress) const
+DecomposeResult RuledDecomposer::decomposeChecked(const DecomposeInput& input, const ParamSet& values,
+                                                  Progress& progress) const
 {
-  // The planner validated `params` against schema() and called accepts() first.
-  const auto lines = static_cast<int>(params.getInt("lines"));
-  const auto samples = static_cast<int>(params.getInt("samples"));
+  // DecomposerPlugin::decompose() called accepts() and validated `values` against schema() first.
+  const auto lines = static_cast<int>(values.getInt("lines"));
+  const auto samples = static_cast<int>(values.getInt("samples"));
   const Vec3 lowCentre = centroid(input.mesh, input.lower);
   const Vec3 highCentre = centroid(input.mesh, *input.upper);
   DecomposeResult out;

@@ -14,8 +14,10 @@ class RuledDecomposer : public DecomposerPlugin {
   std::string description() const override;
   const ParamSchema& schema() const override;
   bool accepts(const DecomposeInput& input, std::string* why) const override;
-  DecomposeResult decompose(const DecomposeInput& input, const ParamSet& params,
-                            Progress& progress) const override;
+
+ private:
+  DecomposeResult decomposeChecked(const DecomposeInput& input, const ParamSet& values,
+                                   Progress& progress) const override;
 };
 
 }  // namespace spira::example

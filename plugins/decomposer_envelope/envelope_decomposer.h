@@ -4,9 +4,9 @@
 
 namespace spira {
 
-// decomposer.envelope_projection: the thesis's first strategy (§2.1), for open parts without
-// overhangs. Vertical envelope generatrices around the part, cut to the free edges, are projected
-// horizontally towards the part's axis (its skeleton, or the vertical line through the base
+// decomposer.envelope_projection: the thesis's first strategy (000_dbb97c2716e10cc3.txt §3.3.2.1), for open
+// parts without overhangs. Vertical envelope generatrices around the part, cut to the free edges, are
+// projected horizontally towards the part's axis (its skeleton, or the vertical line through the base
 // centroid) onto the nearest surface hit. Fast and faithful on parts of revolution and sloped
 // rims; refuses closed parts, multi-branch parts and overhangs (the surface under an overhang
 // gets no projection) with a message naming where it fails.

@@ -31,15 +31,14 @@ struct EnvelopeDecomposition {
   size_t raysCast = 0;
 };
 
-// Envelope projection (thesis §2.1), for open parts. The envelope generatrices are vertical lines
-// on a cylinder of radius R about the axis (swept along it when the axis is not vertical), R
-// being the part's largest distance from the axis plus a margin: the thesis dilates the envelope
-// until it wraps the part, and this one wraps it from the start. Each envelope generatrix is cut
-// to the part: it runs from the height where the lower free edge crosses its angle to the height
-// where the upper edge does, which is the thesis's length adaptation for non-planar edges. Its
-// points P_i are projected along P_i -> S_i, S_i being the axis point at the same height (a
-// horizontal ray, so the order of the points is kept), onto the nearest surface hit
-// (ray-triangle intersection through a bounding-volume hierarchy).
+// Envelope projection (thesis 000_dbb97c2716e10cc3.txt §3.3.2.1), for open parts. The envelope generatrices
+// are vertical lines on a cylinder of radius R about the axis (swept along it when the axis is not vertical),
+// R being the part's largest distance from the axis plus a margin: the thesis dilates the envelope until it
+// wraps the part, and this one wraps it from the start. Each envelope generatrix is cut to the part: it runs
+// from the height where the lower free edge crosses its angle to the height where the upper edge does, which
+// is the thesis's length adaptation for non-planar edges. Its points P_i are projected along P_i -> S_i, S_i
+// being the axis point at the same height (a horizontal ray, so the order of the points is kept), onto the
+// nearest surface hit (ray-triangle intersection through a bounding-volume hierarchy).
 //
 // Overhangs: where the wall folds back, part of the surface is hidden from the envelope and the
 // nearest hits jump across it. Every step between consecutive hits longer than three sampling

@@ -8,8 +8,8 @@
 
 namespace spira {
 
-// What the envelope points are projected towards: one point per height (thesis §2.1 step 2,
-// "a skeleton point S_i at the same altitude as P_i"). Either a vertical line or a chain of
+// What the envelope points are projected towards: one point per height (thesis 000_dbb97c2716e10cc3.txt
+// §3.3.2.1 step 2, "a skeleton point S_i at the same altitude as P_i"). Either a vertical line or a chain of
 // points rising in z (a monotone skeleton). Beyond the chain's ends (the skeleton stops short of
 // the free edges) it goes on along the direction of its last stretch, when that stretch rises
 // steeply enough to say where the axis goes; otherwise it stays at the end point's x, y.

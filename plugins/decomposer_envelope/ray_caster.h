@@ -11,8 +11,8 @@
 namespace spira {
 
 // Nearest ray-triangle hits against a mesh, through a bounding-volume hierarchy (the thesis
-// loops over every triangle per ray, §2.1 step 2; the hierarchy makes a ray cost about log n).
-// It copies the triangles it needs, so the mesh may go away. Reentrant: queries are const.
+// loops over every triangle per ray, 000_dbb97c2716e10cc3.txt §3.3.2.1 step 2; the hierarchy makes a ray cost
+// about log n). It copies the triangles it needs, so the mesh may go away. Reentrant: queries are const.
 class RayCaster {
  public:
   explicit RayCaster(const TriangleMesh& mesh);

@@ -15,7 +15,8 @@ struct BasePoint {
 };
 
 // The lower free edge seen from the vertical axis through its centroid (the length-weighted mean
-// of its edges), for the thesis's constant-angle discretisation of the base (§2.2.1, Fig. 3.18a).
+// of its edges), for the thesis's constant-angle discretisation of the base (000_dbb97c2716e10cc3.txt
+// §3.3.2.2, Fig. 3.18a).
 class BaseRing {
  public:
   // Throws InputError for a loop of fewer than 3 vertices or one that encloses no area seen from above.

@@ -33,10 +33,10 @@ struct FillInContext {
   size_t samples = 2;                   // points per generatrix
 };
 
-// The fill-in generatrix between a and b (thesis §2.2.1): their median curve projected on the
-// surface (each point onto its closest surface point, i.e. along the vector (v, v') that gave the
-// error), starting on the base at the angle halfway between theirs and ending on the upper edge
-// (its closest point) or at the closure point.
+// The fill-in generatrix between a and b (thesis 000_dbb97c2716e10cc3.txt §3.3.2.2): their median curve
+// projected on the surface (each point onto its closest surface point, i.e. along the vector (v, v') that
+// gave the error), starting on the base at the angle halfway between theirs and ending on the upper edge (its
+// closest point) or at the closure point.
 GeneratrixLine fillInBetween(const GeneratrixLine& a, const GeneratrixLine& b, const FillInContext& context);
 
 struct CoverageResult {

@@ -27,9 +27,9 @@ struct SolvedGeneratrix {
   bool traced = false;  // the guide reached the target
 };
 
-// One generatrix (thesis §2.2.1): from a base point, the exact shortest path to the nearest point
-// of the upper edge (Eq. 3.7: argmin over the upper edge of the geodesic distance, refined along
-// its edges between vertices) or to the closure point.
+// One generatrix (thesis 000_dbb97c2716e10cc3.txt §3.3.2.2): from a base point, the exact shortest path to
+// the nearest point of the upper edge (Eq. 3.7: argmin over the upper edge of the geodesic distance, refined
+// along its edges between vertices) or to the closure point.
 //
 // The exact search runs on a band of faces around a guide (traceGuide on an approximate distance
 // field to the target), and the band is widened (1, 2, 4, ... 32 rings, then the whole mesh)

@@ -4,9 +4,9 @@
 
 namespace spira {
 
-// decomposer.geodesic: the thesis's geodesic-distance strategy (§2.2). One generatrix per base
-// point, the base points at constant angle around the vertical axis through the base centroid;
-// each generatrix is the exact shortest path on the mesh from its base point to the nearest point
+// decomposer.geodesic: the thesis's geodesic-distance strategy (000_dbb97c2716e10cc3.txt §3.3.2.2). One
+// generatrix per base point, the base points at constant angle around the vertical axis through the base
+// centroid; each generatrix is the exact shortest path on the mesh from its base point to the nearest point
 // of the upper edge (open parts, Eq. 3.7) or to the closure point (closed parts). Neighbours that
 // leave part of the surface uncovered get fill-in generatrices (Eq. 3.8-3.9). Slower than
 // decomposer.isovalue, but every generatrix is as short as the surface allows.

@@ -50,9 +50,9 @@ struct GeodesicDecomposition {
   GeodesicStats stats;
 };
 
-// The thesis's geodesic-distance decomposition (§2.2): n_pts base points at constant angle around
-// the vertical axis through the base centroid, from each the exact shortest path to the nearest
-// point of the upper edge (Eq. 3.7; open parts, `upper` given) or to the closure point (closed
+// The thesis's geodesic-distance decomposition (000_dbb97c2716e10cc3.txt §3.3.2.2): n_pts base points at
+// constant angle around the vertical axis through the base centroid, from each the exact shortest path to the
+// nearest point of the upper edge (Eq. 3.7; open parts, `upper` given) or to the closure point (closed
 // parts), then the coverage check between neighbours with fill-in generatrices (Eq. 3.8-3.9).
 // Closed parts take `closurePoint` (from a closure finder) or else the farthest vertex from the
 // base along `baseDistance` (the geodesic distance from the lower edge, computed here if null).

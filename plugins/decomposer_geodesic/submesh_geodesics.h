@@ -27,8 +27,8 @@ struct ExactPath {
 
 // Exact shortest paths from one source point over a sub-mesh of a part (CGAL's
 // Surface_mesh_shortest_path: Xin & Wang's improvement of the Chen & Han algorithm, the one the
-// thesis uses, §2.2.1). Paths are exact on the sub-mesh: where the sub-mesh was cut out of a
-// larger mesh, a path that passes through a vertex of the cut may be longer than on the whole
+// thesis uses, 000_dbb97c2716e10cc3.txt §3.3.2.2). Paths are exact on the sub-mesh: where the sub-mesh was
+// cut out of a larger mesh, a path that passes through a vertex of the cut may be longer than on the whole
 // mesh, which the caller checks with `throughVertices`.
 //
 // Vertices whose angle sum is 2 pi to 1e-6 (every vertex of a developable part: a cylinder, a

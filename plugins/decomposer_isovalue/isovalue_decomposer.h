@@ -4,8 +4,8 @@
 
 namespace spira {
 
-// decomposer.isovalue: the thesis's recommended strategy (§2.4). Generatrices follow the
-// iso-contours of a per-vertex scalar field: DecomposeInput::field when the caller computed one,
+// decomposer.isovalue: the thesis's recommended strategy (000_dbb97c2716e10cc3.txt §3.3.2.4). Generatrices
+// follow the iso-contours of a per-vertex scalar field: DecomposeInput::field when the caller computed one,
 // otherwise the thesis's own, computed here: the heat-method geodesic distance from the lower edge
 // on closed parts, the harmonic field (0 on the lower edge, 1 on the upper) on open parts.
 // Mono-branch parts only: a field whose contour count changes is refused.

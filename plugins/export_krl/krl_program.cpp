@@ -23,8 +23,8 @@
 // - the arc and the wire feed are switched with path-synchronous TRIGGER WHEN DISTANCE=0/1
 //   statements on plain outputs ($OUT, $ANOUT). A trigger is planned with its motion and fires
 //   at its point of the path, so no I/O statement stops the advance run between approximated
-//   moves (spec B.4: a standalone output statement there would stop the robot at every setpoint
-//   and over-deposit);
+//   moves (003_abf6ea7743219370.txt §3.5.3: a standalone output statement there would stop the robot at every
+//   setpoint and over-deposit);
 // - a long path is split into parts <name>_001.. that the main program calls in order; the
 //   advance run and approximation continue across the calls, and the arc, switched by triggers
 //   in the first and last parts, stays on in between;

@@ -45,5 +45,20 @@ TEST(NumberText, LongUserTextIsClipped)
   EXPECT_EQ(clippedText("short"), "short");
 }
 
+// The message forms: rounded to at most three decimals without trailing zeros, and %g-like
+// significant digits (what mesh reports and refusals print).
+TEST(NumberText, MessageNumbersAreRoundedOrSignificant)
+{
+  EXPECT_EQ(roundedText(1.23456, 3), "1.235");
+  EXPECT_EQ(roundedText(2.0004, 3), "2");
+  EXPECT_EQ(roundedText(120.0, 3), "120");
+  EXPECT_EQ(roundedText(-0.0004, 3), "0");  // no "-0"
+  EXPECT_EQ(roundedText(0.1, 3), "0.1");    // the shortest text, not 0.10000000000000001
+  EXPECT_EQ(significantText(1234567.0, 6), "1.23457e+06");
+  EXPECT_EQ(significantText(0.000123456, 4), "0.0001235");
+  EXPECT_EQ(significantText(52.0, 6), "52");
+  EXPECT_DOUBLE_EQ(roundedTo(2.71828, 2), 2.72);
+}
+
 }  // namespace
 }  // namespace spira::test

@@ -3,9 +3,6 @@
 // files are fine, the cell is not up to them.
 #include <gtest/gtest.h>
 
-#include <fstream>
-#include <sstream>
-
 #include <nlohmann/json.hpp>
 
 #include "cell_variant.h"
@@ -17,17 +14,9 @@ namespace fs = std::filesystem;
 namespace spira::test {
 namespace {
 
-std::string slurp(const fs::path& p)
-{
-  std::ifstream in(p);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
 nlohmann::json readReport(const fs::path& dir)
 {
-  return nlohmann::json::parse(slurp(dir / "report.json"));
+  return nlohmann::json::parse(readBytes(dir / "report.json"));
 }
 
 // The KUKA cell with the part 1.5 m beyond its reach.
@@ -84,7 +73,7 @@ TEST(CliExportRefusal, ARefusedExportLeavesNoProgramOfThePreviousPlan)
     EXPECT_TRUE(e.path().extension() != ".src" && e.path().extension() != ".dat") << e.path();
   EXPECT_EQ(readReport(plan)["reachable"], false);
 
-  std::string csv = slurp(plan / "trajectory.csv");
+  std::string csv = readBytes(plan / "trajectory.csv");
   csv.back() = csv.back() == '\n' ? ' ' : '\n';
   writeBytes(plan / "trajectory.csv", csv);
   const CliRun mixed = runCli({"export", plan.string(), "--format", "krl", "-o", (dir / "program").string()});

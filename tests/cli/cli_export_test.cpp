@@ -1,6 +1,5 @@
 #include <gtest/gtest.h>
 
-#include <fstream>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
@@ -19,12 +18,6 @@ fs::path resource(const std::string& sub)
   return sourceDir() / "resources" / sub;
 }
 
-std::string slurp(const fs::path& file)
-{
-  std::ifstream in(file, std::ios::binary);
-  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-}
-
 size_t count(const std::string& text, const std::string& what)
 {
   size_t n = 0;
@@ -41,8 +34,8 @@ TEST(CliExport, CylinderOnTheKukaCellGivesOneArcOnAndOneArcOff)
                            "--cell", resource("cells/kuka_kr16_2_table.cell").string(), "--points-per-rev",
                            "120", "--export", "krl", "--program-name", "wall1"});
   ASSERT_EQ(r.exitCode, 0) << r.err << r.out;
-  const std::string src = slurp(dir / "wall1.src");
-  const std::string dat = slurp(dir / "wall1.dat");
+  const std::string src = readBytes(dir / "wall1.src");
+  const std::string dat = readBytes(dir / "wall1.dat");
   ASSERT_FALSE(src.empty());
   EXPECT_NE(src.find("DEF wall1( )"), std::string::npos);
   EXPECT_NE(src.find("; part: open_cylinder.stl"), std::string::npos);
@@ -62,7 +55,7 @@ TEST(CliExport, CylinderOnTheKukaCellGivesOneArcOnAndOneArcOff)
   for (const auto& f : fs::directory_iterator(tp)) {
     if (f.path().extension() != ".ls") continue;
     found = true;
-    const std::string ls = slurp(f.path());
+    const std::string ls = readBytes(f.path());
     EXPECT_EQ(count(ls, ":  Arc Start["), 1u);  // instructions, not the header comment
     EXPECT_EQ(count(ls, ":  Arc End["), 1u);
     size_t lineCount = 0;

@@ -3,9 +3,6 @@
 // down, and then the report gives the thicker deposit point by point.
 #include <gtest/gtest.h>
 
-#include <fstream>
-#include <sstream>
-
 #include <nlohmann/json.hpp>
 
 #include "cell_variant.h"
@@ -18,17 +15,9 @@ namespace fs = std::filesystem;
 namespace spira::test {
 namespace {
 
-std::string slurp(const fs::path& p)
-{
-  std::ifstream in(p);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
 nlohmann::json readReport(const fs::path& dir)
 {
-  return nlohmann::json::parse(slurp(dir / "report.json"));
+  return nlohmann::json::parse(readBytes(dir / "report.json"));
 }
 
 // The FANUC positioner cell with a slow rotary axis. On the cylinder the table turns with the part,

@@ -114,6 +114,10 @@ TEST(CliPlanProject, PlanningThePartFileGivesThePlanOfTheProject)
       EXPECT_EQ(j->erase(key), 1u) << key;
   EXPECT_EQ(a, b);
   EXPECT_EQ(a.at("n_points"), b.at("n_points"));
+  // The spiral's report carries the window it was planned for: h = 1.9 mm +/- 10 %.
+  EXPECT_DOUBLE_EQ(b.at("h").get<double>(), 1.9);
+  EXPECT_DOUBLE_EQ(b.at("h_min").get<double>(), 1.9 * 0.9);
+  EXPECT_DOUBLE_EQ(b.at("h_max").get<double>(), 1.9 * 1.1);
 }
 
 TEST(CliPlanProject, OptionsThatWouldOverrideTheProjectAreUsageErrors)

@@ -316,8 +316,7 @@ TEST(CliField, WritesCsvAndVtp)
   const CliRun vtp =
       runCli({"field", sample("dome.stl").string(), "--kind", "geodesic", "-o", (dir / "g.vtp").string()});
   ASSERT_EQ(vtp.exitCode, 0) << vtp.err;
-  std::ifstream v(dir / "g.vtp");
-  const std::string text((std::istreambuf_iterator<char>(v)), {});
+  const std::string text = readBytes(dir / "g.vtp");
   EXPECT_NE(text.find("<VTKFile type=\"PolyData\""), std::string::npos);
   EXPECT_NE(text.find("NumberOfPoints=\"8837\""), std::string::npos);
   EXPECT_EQ(

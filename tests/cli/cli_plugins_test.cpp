@@ -1,6 +1,5 @@
 #include <gtest/gtest.h>
 
-#include <fstream>
 #include <set>
 
 #include <nlohmann/json.hpp>
@@ -47,9 +46,8 @@ TEST(CliSample, BundledSamplesAreWhatTheGeneratorMakes)
     const CliRun r = runCli({"sample", name, "-o", out.string()});
     ASSERT_EQ(r.exitCode, 0) << r.err;
     const auto bundled = sourceDir() / "resources" / "samples" / file;
-    std::ifstream a(out, std::ios::binary), b(bundled, std::ios::binary);
-    const std::string made((std::istreambuf_iterator<char>(a)), {});
-    const std::string kept((std::istreambuf_iterator<char>(b)), {});
+    const std::string made = readBytes(out);
+    const std::string kept = readBytes(bundled);
     EXPECT_EQ(made.size(), kept.size()) << file;
     EXPECT_TRUE(made == kept) << file
                               << " differs from the generator's output: regenerate it with spira-cli sample";

@@ -2,7 +2,6 @@
 // folder, a project without a trajectory is refused, the plain CSV export, bad output folders.
 #include <gtest/gtest.h>
 
-#include <fstream>
 #include <memory>
 
 #include "cli_runner.h"
@@ -21,12 +20,6 @@ namespace {
 fs::path resource(const std::string& sub)
 {
   return sourceDir() / "resources" / sub;
-}
-
-std::string slurp(const fs::path& file)
-{
-  std::ifstream in(file, std::ios::binary);
-  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
 }
 
 size_t count(const std::string& text, const std::string& what)
@@ -89,7 +82,7 @@ TEST(ExportProject, KrlFromTheProjectEqualsKrlFromThePlanFolder)
   const CliRun b = runCli(
       {"export", p.planDir.string(), "--format", "krl", "-o", fromPlan.string(), "--program-name", "wall"});
   ASSERT_EQ(b.exitCode, 0) << b.err << b.out;
-  const std::string src = slurp(fromProject / "wall.src"), dat = slurp(fromProject / "wall.dat");
+  const std::string src = readBytes(fromProject / "wall.src"), dat = readBytes(fromProject / "wall.dat");
   EXPECT_NE(src.find("; cell: KUKA KR 16-2 on a fixed table"), std::string::npos);
   EXPECT_NE(src.find("; part: open_cylinder.stl"), std::string::npos);
   EXPECT_EQ(count(src, "$OUT[1]=TRUE"), 1u);
@@ -97,8 +90,8 @@ TEST(ExportProject, KrlFromTheProjectEqualsKrlFromThePlanFolder)
   EXPECT_EQ(count(src, "LIN XP"), count(dat, "DECL E6POS XP"));
   EXPECT_GT(count(dat, "DECL E6POS XP"), 100u);
   // Same cell, same trajectory, same settings: the same motion, target for target.
-  EXPECT_EQ(withoutComments(src), withoutComments(slurp(fromPlan / "wall.src")));
-  EXPECT_EQ(withoutComments(dat), withoutComments(slurp(fromPlan / "wall.dat")));
+  EXPECT_EQ(withoutComments(src), withoutComments(readBytes(fromPlan / "wall.src")));
+  EXPECT_EQ(withoutComments(dat), withoutComments(readBytes(fromPlan / "wall.dat")));
   EXPECT_EQ(e6posStatusValues(dat).size(), 1u);
 }
 
@@ -109,7 +102,7 @@ TEST(ExportProject, CellFlagOverridesTheProjectCell)
   const CliRun r = runCli({"export", p.project.string(), "--format", "fanuc_tp", "-o", out.string(), "--cell",
                            resource("cells/fanuc_m20ia_positioner.cell").string()});
   ASSERT_EQ(r.exitCode, 0) << r.err << r.out;
-  const std::string ls = slurp(out / "SPIRA_PART.ls");
+  const std::string ls = readBytes(out / "SPIRA_PART.ls");
   EXPECT_EQ(count(ls, ":  Arc Start["), 1u);
   EXPECT_EQ(count(ls, ":  Arc End["), 1u);
   EXPECT_NE(ls.find("DEFAULT_GROUP\t= 1,1,*,*,*;"), std::string::npos);  // the positioner cell's GP2
@@ -125,7 +118,7 @@ TEST(ExportProject, CsvWritesThePlannedTrajectoryAndItsJoints)
   ASSERT_EQ(back.size(), p.trajectory.size());
   for (size_t i = 0; i < back.size(); i += 7)
     EXPECT_LT((back.points[i].position - p.trajectory.points[i].position).norm(), 1e-6) << i;
-  EXPECT_EQ(count(slurp(out / "joints.csv"), "\n"), p.trajectory.size() + 1);  // header + one per point
+  EXPECT_EQ(count(readBytes(out / "joints.csv"), "\n"), p.trajectory.size() + 1);  // header + one per point
 }
 
 TEST(ExportProject, AProjectWithoutATrajectoryIsRefusedWithAHint)
@@ -150,7 +143,7 @@ TEST(ExportProject, AnUnwritableOutputFolderFailsBeforeAnythingIsWritten)
       runCli({"export", p.project.string(), "--format", "krl", "-o", (p.dir / "a_file" / "sub").string()});
   EXPECT_EQ(r.exitCode, 3) << r.err;
   EXPECT_TRUE(fs::is_regular_file(p.dir / "a_file"));
-  EXPECT_EQ(slurp(p.dir / "a_file"), "x");
+  EXPECT_EQ(readBytes(p.dir / "a_file"), "x");
   const CliRun noFile = runCli(
       {"export", (p.dir / "missing.spira").string(), "--format", "krl", "-o", (p.dir / "never").string()});
   EXPECT_EQ(noFile.exitCode, 3) << noFile.err;

@@ -2,7 +2,6 @@
 // travel between them with the arc off, a PTP where the sub-path changes.
 #include <gtest/gtest.h>
 
-#include <fstream>
 #include <functional>
 #include <sstream>
 
@@ -17,12 +16,6 @@ namespace fs = std::filesystem;
 
 namespace spira::test {
 namespace {
-
-std::string slurp(const fs::path& file)
-{
-  std::ifstream in(file, std::ios::binary);
-  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-}
 
 TEST(ExportYTube, PlanWithExportWritesOneArcPerSubPath)
 {
@@ -41,13 +34,13 @@ TEST(ExportYTube, PlanWithExportWritesOneArcPerSubPath)
   // export is refused unless forced (the bad-input rule); forced, each such move carries a
   // warning comment and the sub-path structure is complete.
   ASSERT_TRUE(r.exitCode == 0 || r.exitCode == 4) << r.err << r.out;
-  const nlohmann::json report = nlohmann::json::parse(slurp(out / "report.json"));
+  const nlohmann::json report = nlohmann::json::parse(readBytes(out / "report.json"));
   EXPECT_EQ(report.value("n_paths", 0), 3);
 
   // Walk the main program and its parts in call order.
   std::vector<std::string> lines;
   std::function<void(const std::string&)> read = [&](const std::string& name) {
-    std::istringstream src(slurp(out / (name + ".src")));
+    std::istringstream src(readBytes(out / (name + ".src")));
     for (std::string line; std::getline(src, line);) {
       if (!line.empty() && line.back() == '\r') line.pop_back();
       if (line.size() > 3 && line.compare(line.size() - 3, 3, "( )") == 0 && line.rfind("DEF ", 0) != 0)

@@ -3,9 +3,7 @@
 // never the JSON library's own text or an internal error (exit 1).
 #include <gtest/gtest.h>
 
-#include <fstream>
 #include <memory>
-#include <sstream>
 
 #include <nlohmann/json.hpp>
 
@@ -20,14 +18,6 @@ namespace fs = std::filesystem;
 
 namespace spira::test {
 namespace {
-
-std::string slurp(const fs::path& p)
-{
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 bool has(const std::string& text, const std::string& part)
 {
@@ -58,7 +48,7 @@ class HostileReport : public ::testing::Test {
   {
     const fs::path plan = tmp_ / "plan";
     fs::copy(*dir_ / "plan", plan);
-    nlohmann::json report = nlohmann::json::parse(slurp(plan / "report.json"));
+    nlohmann::json report = nlohmann::json::parse(readBytes(plan / "report.json"));
     report[key] = value;
     writeBytes(plan / "report.json", report.dump(2));
     fs::remove(plan / kOutputManifest);
@@ -116,7 +106,7 @@ TEST_F(HostileReport, VerdictOfTheWrongTypeIsRefusedNotIgnored)
 TEST_F(HostileReport, InfeasibleVerdictQuotesTheDepositCheckSummary)
 {
   const fs::path plan = editedPlan("feasible", false);
-  nlohmann::json report = nlohmann::json::parse(slurp(plan / "report.json"));
+  nlohmann::json report = nlohmann::json::parse(readBytes(plan / "report.json"));
   report["deposit_check"]["summary"] = "3 points rejected: 2 thin, 1 jump";
   writeBytes(plan / "report.json", report.dump(2));
   const CliRun r = exportPlan(plan);
@@ -172,7 +162,7 @@ TEST(HostileCell, NumberBeyondDoubleRangeIsBadInputWithItsPlace)
   const fs::path cell = bundledCellVariant("kuka_kr16_2_table.cell", dir.path(), [](nlohmann::json& c) {
     c["part"]["pose"]["xyz_mm"] = {123456789, 0, 400};
   });
-  std::string text = slurp(cell);
+  std::string text = readBytes(cell);
   const size_t at = text.find("123456789");
   ASSERT_NE(at, std::string::npos);
   text.replace(at, 9, "1e999");

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstring>
 
+#include "collision/mesh_builders.h"
 #include "spira/base/units.h"
 #include "spira/collision/collision_resolver.h"
 
@@ -35,16 +36,6 @@ Trajectory domeSpiral(double r, double polarEndDeg, int turns, int perTurn)
   return plan;
 }
 
-TriangleMesh post(const Vec3& lo, const Vec3& hi)
-{
-  TriangleMesh m;
-  for (int k = 0; k < 8; ++k)
-    m.vertices.emplace_back(k & 1 ? hi.x() : lo.x(), k & 2 ? hi.y() : lo.y(), k & 4 ? hi.z() : lo.z());
-  m.faces = {{0, 2, 1}, {1, 2, 3}, {4, 5, 6}, {5, 7, 6}, {0, 1, 4}, {1, 5, 4},
-             {2, 6, 3}, {3, 6, 7}, {0, 4, 2}, {2, 4, 6}, {1, 3, 5}, {3, 7, 5}};
-  return m;
-}
-
 CollisionResolution resolveOn(int threads, const Trajectory& plan, const TorchCollisionChecker& checker)
 {
   tbb::task_arena arena(threads);
@@ -64,7 +55,7 @@ TEST(ParallelResolution, OneThreadAndManyGiveBitIdenticalResults)
   const Trajectory plan = domeSpiral(40.0, 15.0, 12, 360);
   CollisionScene scene;
   scene.setSubstratePlane(Vec3::Zero(), Vec3::UnitZ());
-  scene.addObstacle("post", post(Vec3(54, -6, 0), Vec3(70, 6, 60)));
+  scene.addObstacle("post", test::boxMesh(Vec3(54, -6, 0), Vec3(70, 6, 60)));
   const TorchCollisionChecker checker(plan, TorchParams(), DepositParams(), scene);
 
   const CollisionResolution serial = resolveOn(1, plan, checker);

@@ -3,10 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
-#include <fstream>
-#include <iterator>
 #include <set>
 #include <sstream>
+
+#include "support/test_support.h"
 
 namespace spira::test {
 
@@ -153,12 +153,6 @@ std::string generatricesDifference(const Generatrices& a, const Generatrices& b)
   return out.str();
 }
 
-std::string readFile(const std::filesystem::path& file)
-{
-  std::ifstream in(file, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-}
-
 std::string folderDifference(const std::filesystem::path& a, const std::filesystem::path& b,
                              const std::vector<std::string>& skip)
 {
@@ -179,7 +173,7 @@ std::string folderDifference(const std::filesystem::path& a, const std::filesyst
     return out.str();
   }
   for (const std::string& name : na) {
-    const std::string ta = readFile(a / name), tb = readFile(b / name);
+    const std::string ta = readBytes(a / name), tb = readBytes(b / name);
     if (ta == tb) continue;
     std::istringstream la(ta), lb(tb);
     std::string x, y;

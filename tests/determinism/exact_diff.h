@@ -24,7 +24,4 @@ std::string generatricesDifference(const Generatrices& a, const Generatrices& b)
 std::string folderDifference(const std::filesystem::path& a, const std::filesystem::path& b,
                              const std::vector<std::string>& skip = {});
 
-// The whole file's bytes.
-std::string readFile(const std::filesystem::path& file);
-
 }  // namespace spira::test

@@ -19,7 +19,7 @@ const char* const kTimingKeys[] = {"timings_s", "kinematics_timings_s"};
 
 nlohmann::json reportWithoutTimes(const std::filesystem::path& file)
 {
-  nlohmann::json report = nlohmann::json::parse(readFile(file));
+  nlohmann::json report = nlohmann::json::parse(readBytes(file));
   for (const char* key : kTimingKeys) report.erase(key);
   return report;
 }

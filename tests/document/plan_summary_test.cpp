@@ -9,6 +9,7 @@
 
 #include "spira/document/plan_report.h"
 #include "spira/document/results.h"
+#include "spira/pipeline/planned_path.h"
 #include "spira/pipeline/program_header.h"
 
 namespace spira::test {
@@ -107,6 +108,28 @@ TEST(ProgramHeader, NamesThePartTheCellTheUtcDateAndThePlan)
   EXPECT_EQ(h.at("cell"), "none (targets in the part frame)");
   EXPECT_EQ(h.at("date"), "1971-01-01 00:00 UTC");
   EXPECT_EQ(h.at("plan"), "closed part, 31 revolutions, deposit 1.83 .. 2.17 mm, path 5712 mm");
+}
+
+// Export follows the path the robot was solved for (its torch tilts cleared collisions), with the
+// points the plan left in collision; without a cell, the process stage's path.
+TEST(PlannedPath, IsTheKinematicsPathWhenSolvedElseTheProcessPath)
+{
+  Trajectory process;
+  process.points.resize(3);
+  Results r;
+  r.setProcess(std::make_shared<const Trajectory>(process));
+  EXPECT_EQ(plannedPathOf(r).trajectory, r.process);
+  EXPECT_TRUE(plannedPathOf(r).collision.empty());
+
+  auto solved = std::make_shared<KinematicsResult>();
+  solved->path = process;
+  solved->path.points[1].normal = Vec3::UnitZ();  // tilted to clear a collision
+  solved->checks = {KinematicsCheck{}, KinematicsCheck{}, KinematicsCheck{}};
+  solved->checks[2].collision = true;
+  r.setKinematics(solved);
+  const PlannedPath p = plannedPathOf(r);
+  EXPECT_EQ(p.trajectory.get(), &r.kinematics->path);
+  EXPECT_EQ(p.collision, (std::vector<bool>{false, false, true}));
 }
 
 }  // namespace

@@ -3,8 +3,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <fstream>
-#include <iterator>
 
 #include "export_test_data.h"
 #include "spira/base/error.h"
@@ -40,8 +38,7 @@ TEST(FanucTpExport, LayoutPositionsSpeedsAndArcMatchThePlan)
   const test::TpFile file = test::readTpFile(dir / "SPIRA_PART.ls");
   EXPECT_EQ(file.attributes.at("DEFAULT_GROUP"), "1,*,*,*,*");
   EXPECT_EQ(file.attributes.at("CREATE"), "DATE 24-05-01  TIME 12:30:00");
-  std::ifstream in(dir / "SPIRA_PART.ls", std::ios::binary);
-  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string text = test::readBytes(dir / "SPIRA_PART.ls");
   EXPECT_NE(text.find("\r\n/APPL\r\n  ARC : TRUE ;\r\n  ARC Welding Equipment : 1,*,*,*,*;\r\n/MN\r\n"),
             std::string::npos);
   EXPECT_EQ(text.rfind("/END\r\n"), text.size() - 6);

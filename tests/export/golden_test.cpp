@@ -6,8 +6,6 @@
 #include <gtest/gtest.h>
 
 #include <cstdlib>
-#include <fstream>
-#include <iterator>
 
 #include "export_test_data.h"
 #include "spira/base/version.h"
@@ -15,12 +13,6 @@
 
 namespace spira {
 namespace {
-
-std::string readText(const std::filesystem::path& file)
-{
-  std::ifstream in(file, std::ios::binary);
-  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-}
 
 std::string withoutVersion(std::string text)
 {
@@ -34,10 +26,10 @@ void expectGolden(const std::filesystem::path& produced)
 {
   const std::filesystem::path golden =
       test::sourceDir() / "tests" / "export" / "golden" / produced.filename();
-  const std::string got = withoutVersion(readText(produced));
+  const std::string got = withoutVersion(test::readBytes(produced));
   if (std::getenv("SPIRA_UPDATE_GOLDEN")) test::writeBytes(golden, got);
   ASSERT_TRUE(std::filesystem::exists(golden)) << golden;
-  const std::string want = readText(golden);
+  const std::string want = test::readBytes(golden);
   if (got == want) return;
   // Point at the first differing line instead of dumping both files.
   size_t line = 1, i = 0;

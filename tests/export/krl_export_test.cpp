@@ -3,8 +3,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <fstream>
-#include <iterator>
 
 #include "export_test_data.h"
 #include "krl_reader.h"
@@ -305,8 +303,7 @@ TEST(KrlExport, LongPathsAreSplitIntoPartsCalledInOrder)
   EXPECT_EQ(run.moves[2].program, "Dome_test_2_001");  // arc struck by the first part
   EXPECT_EQ(run.moves[plan.size()].program, "Dome_test_2_004");
   // The part that switches the end job declares the job signal it assigns.
-  std::ifstream last(dir / "Dome_test_2_004.src", std::ios::binary);
-  const std::string lastText((std::istreambuf_iterator<char>(last)), std::istreambuf_iterator<char>());
+  const std::string lastText = test::readBytes(dir / "Dome_test_2_004.src");
   EXPECT_NE(lastText.find("\r\nSIGNAL SPIRA_JOB $OUT[9] TO $OUT[16]\r\n"), std::string::npos);
   EXPECT_NE(lastText.find("DO SPIRA_JOB=2 ; end job at XP60"), std::string::npos);
   // The speed of the retract is set again after the parts ran at the travel speed.

@@ -1,24 +1,16 @@
 #include "krl_reader.h"
 
 #include <cstdlib>
-#include <fstream>
 #include <sstream>
 
 #include "spira/base/units.h"
+#include "support/test_support.h"
 
 namespace fs = std::filesystem;
 
 namespace spira::test {
 
 namespace {
-
-std::string readAll(const fs::path& file)
-{
-  std::ifstream in(file, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 // Lines split at CRLF; a bare LF or CR is reported as a problem.
 std::vector<std::string> crlfLines(const std::string& text, const std::string& what,
@@ -114,7 +106,7 @@ struct Runner {
     run.programs.push_back(name);
     if (name.size() > 24) run.problems.push_back(name + ": name longer than 24 characters");
     const auto targets = readKrlDat(dir / (name + ".dat"), run.problems);
-    const auto lines = crlfLines(readAll(dir / (name + ".src")), name + ".src", run.problems);
+    const auto lines = crlfLines(readBytes(dir / (name + ".src")), name + ".src", run.problems);
     checkPreamble(lines, name + ".src", run.problems);
     bool inDef = false, ended = false;
     for (const auto& raw : lines) {
@@ -171,7 +163,7 @@ std::map<std::string, KrlTarget> readKrlDat(const fs::path& file, std::vector<st
 {
   std::map<std::string, KrlTarget> targets;
   const std::string name = file.stem().string();
-  const auto lines = crlfLines(readAll(file), file.filename().string(), problems);
+  const auto lines = crlfLines(readBytes(file), file.filename().string(), problems);
   checkPreamble(lines, file.filename().string(), problems);
   bool open = false, closed = false;
   for (const auto& raw : lines) {

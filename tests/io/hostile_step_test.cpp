@@ -11,9 +11,7 @@
 
 #include <algorithm>
 #include <cstdlib>
-#include <fstream>
 #include <regex>
-#include <sstream>
 
 #include "io_test_util.h"
 #include "support/test_support.h"
@@ -26,14 +24,6 @@ namespace {
 fs::path hostile(const std::string& name)
 {
   return sourceDir() / "tests/data/hostile/step" / name;
-}
-
-std::string readText(const fs::path& file)
-{
-  std::ifstream in(file, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
 }
 
 // Sets an environment variable for one test.
@@ -95,7 +85,7 @@ TEST(HostileStep, FewFacesLostIsAWarningThatCountsThem)
 {
   TempDir dir;
   writeBoxes(25, dir / "boxes.step");
-  std::string text = readText(dir / "boxes.step");
+  std::string text = readBytes(dir / "boxes.step");
   // The first shell loses its first face: 149 of the 150 faces remain.
   const std::regex firstFace(R"((CLOSED_SHELL\('',\()#\d+)");
   text = std::regex_replace(text, firstFace, "$1#999999", std::regex_constants::format_first_only);
@@ -113,7 +103,7 @@ TEST(HostileStep, HugeTokenIsRefusedBeforeOpenCascadeReadsIt)
   // A 5,000,000-character string inside an entity: OpenCASCADE needs seconds and gigabytes for it,
   // the token scan refuses it at once, naming its line.
   TempDir dir;
-  std::string text = readText(hostile("unresolved_point.step"));
+  std::string text = readBytes(hostile("unresolved_point.step"));
   const std::string point = "#12 = CARTESIAN_POINT('',#999);";
   ASSERT_NE(text.find(point), std::string::npos);
   const size_t line =

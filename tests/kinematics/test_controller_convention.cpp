@@ -33,7 +33,8 @@ JointVector deg(double a, double b, double c, double d, double e, double f)
   return q;
 }
 
-// FANUC WPR of a rotation: R = Rz(R) Ry(P) Rx(W), in degrees (spec section 3.5, exporter form).
+// FANUC WPR of a rotation: R = Rz(R) Ry(P) Rx(W), in degrees (004_bd0df31205c0c3c0.txt Appendix B, FANUC's
+// naming).
 Vec3 fanucWpr(const Mat3& r)
 {
   return Vec3(radToDeg(std::atan2(r(2, 1), r(2, 2))),
@@ -81,7 +82,8 @@ TEST(ControllerConvention, FanucJ3IsCoupledToJ2)
   EXPECT_NEAR(radToDeg(fc.limitMargin(fc.fromControllerDeg({{0, 0, 280, 0, 0, 0}}))), 273.12 - 280, 1e-3);
 }
 
-// Spec section 3.3 checks (V19-V21) of the ArcMate 120iC in pendant joints, FANUC World (= base).
+// The three check poses of the clean model of test_fanuc_spec_model.cpp (after 004_bd0df31205c0c3c0.txt App.
+// C.1) of the ArcMate 120iC in pendant joints, FANUC World (= base).
 TEST(ControllerConvention, FanucSpecPosesInPendantJoints)
 {
   const ArmIk ik = fanuc();

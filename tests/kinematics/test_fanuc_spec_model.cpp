@@ -1,5 +1,6 @@
-// The FANUC ArcMate 120iC / M-20iA arm against the clean forward model of the spec
-// (tubes-robots-chalvin.md section 3.3), composed here from the thesis lengths in pendant joints:
+// The FANUC ArcMate 120iC / M-20iA arm against the clean forward model (Chalvin's
+// 004_bd0df31205c0c3c0.txt Appendix C.1 with the translation of M12 corrected), composed here from the thesis
+// lengths in pendant joints:
 //   Flange(J) = Rz(J1) Tx(d2) Ry(J2) Tz(d3) Ry(-(J2+J3)) Tz(d4) Rx(-J4) Tx(r4) Ry(-J5) Tx(r6) Rx(-J6) R_fp
 // with R_fp = Ry(-90 deg) Rx(180 deg), d2 = 150, d3 = 790, d4 = 250, r4 = 835, r6 = 100 (mm). The
 // bundled URDF read through the controller convention must agree everywhere, not only at the three
@@ -43,7 +44,7 @@ TEST(FanucSpecModel, UrdfChainEqualsTheSpecCleanModelInPendantJoints)
 {
   const ArmIk ik(KinematicChain::fromUrdfFile(test::robotUrdf("fanuc_m20ia"), "base", "tool0"));
   const ControllerConvention fc(Controller::FanucR30ib, ik.chain());
-  // The spec's check values first (V19-V21), here as whole matrices: W P R (180, -90, 0) at J = 0 is
+  // The clean model's three check poses first, here as whole matrices: W P R (180, -90, 0) at J = 0 is
   // R = Rz(0) Ry(-90) Rx(180).
   const Transform zero = ik.forward(fc.fromControllerDeg({{0, 0, 0, 0, 0, 0}}));
   EXPECT_LT((zero.translation() - Vec3(1085, 0, 1040)).norm(), 1e-9);

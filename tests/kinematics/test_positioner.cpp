@@ -51,8 +51,8 @@ TEST(TiltRotatePositioner, TurnsAnyDirectionVertical)
     const std::vector<Axes> all = p.solveAll(b);
     ASSERT_EQ(all.size(), 2u);
     for (const Axes& e : all) worst = std::max(worst, (p.forward(e).linear() * b - Vec3::UnitZ()).norm());
-    // Spec Eq. C.24-C.25: q7 = atan2(sqrt(bx^2 + by^2), bz), q8 = atan2(by, -bx), and
-    // Ry(q7) Rz(q8) b = z; it is the first (e1 >= 0) branch here.
+    // 004_bd0df31205c0c3c0.txt Eq. C.24-C.25 (its R_X, R_Y, R_Z are b's components): q7 = atan2(sqrt(bx^2 +
+    // by^2), bz), q8 = atan2(by, -bx), and Ry(q7) Rz(q8) b = z; it is the first (e1 >= 0) branch here.
     const double q7 = std::atan2(std::hypot(b.x(), b.y()), b.z()), q8 = std::atan2(b.y(), -b.x());
     const Vec3 thesis = Eigen::AngleAxisd(q7, Vec3::UnitY()) * (Eigen::AngleAxisd(q8, Vec3::UnitZ()) * b);
     ASSERT_LT((thesis - Vec3::UnitZ()).norm(), 1e-12);

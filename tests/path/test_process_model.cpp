@@ -1,4 +1,4 @@
-// Deposit height -> travel speed / wire feed (thesis §4.2.1 Eq. 4.1, §4.3.1).
+// Deposit height -> travel speed / wire feed (thesis 000_dbb97c2716e10cc3.txt §4.2.1, Eq. 4.1; §4.3.1).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -40,14 +40,15 @@ CalibrationTable sevenBeads()
 
 }  // namespace
 
-// Spec §5.1: WFS 2.3 m/min, d = 1 mm, W = 5.2 mm -> TS = 3.22 / 2.89 / 2.63 mm/s for 1.8 / 2.0 / 2.2 mm.
+// Eq. 4.1 with the wall width of Fig. 4.3: WFS 2.3 m/min, d = 1 mm, W = 5.2 mm -> TS = 3.22 / 2.89 / 2.63
+// mm/s for 1.8 / 2.0 / 2.2 mm.
 TEST(ProcessModel, MassConservationNumbers)
 {
   EXPECT_NEAR(kWfs, 38.3333, 1e-4);
   EXPECT_NEAR(massConservationTravelSpeed(1.0, 5.2, kWfs, 1.8), 3.22, 0.005);
   EXPECT_NEAR(massConservationTravelSpeed(1.0, 5.2, kWfs, 2.0), 2.89, 0.005);
   EXPECT_NEAR(massConservationTravelSpeed(1.0, 5.2, kWfs, 2.2), 2.63, 0.005);
-  // Spec V15: pi d^2 / 4 * WFS = 30.1 mm^3/s, so LH * W * TS = 30.1.
+  // Eq. 4.1: pi d^2 / 4 * WFS = 30.1 mm^3/s, so LH * W * TS = 30.1.
   EXPECT_NEAR(massConservationHeight(1.0, 5.2, kWfs, 2.0) * 5.2 * 2.0, 30.1, 0.01);
   EXPECT_NEAR(massConservationHeight(1.0, 5.2, kWfs, massConservationTravelSpeed(1.0, 5.2, kWfs, 1.9)), 1.9,
               1e-12);

@@ -1,6 +1,6 @@
-// The thesis's warm-up (§3.2, spec V1/V2): a thin cylinder R = 50, H = 100 mm with straight vertical
-// generatrices, h = 1 mm ±10 %. Every expected number here comes from closed forms of the cylinder
-// and of the ramp rule, not from the library.
+// The thesis's warm-up (000_dbb97c2716e10cc3.txt §3.2.2-3.2.4, Table 3.1): a thin cylinder R = 50, H = 100 mm
+// with straight vertical generatrices, h = 1 mm ±10 %. Every expected number here comes from closed forms of
+// the cylinder and of the ramp rule, not from the library.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -18,8 +18,8 @@ namespace {
 constexpr double kR = 50.0, kH = 100.0;
 constexpr int kN = 360;
 
-// The spec's ramp rule at ±10 % (4 full ramps), written out: the transition ramp ends at `top`, the
-// constant revolution is laid at `c`.
+// The ramp rule of docs/method.md M14 at ±10 % (4 full ramps), written out: the transition ramp ends at
+// `top`, the constant revolution is laid at `c`.
 struct Ramps {
   double top, c;
   double start(int r, double u) const

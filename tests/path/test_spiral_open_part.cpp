@@ -13,9 +13,9 @@
 
 using namespace spira;
 
-// Thesis Table 3.3 (the "trompe", spec V3): generatrices of 152 to 178 mm at 2 ± 0.2 mm give 84
-// revolutions, deposits of 1.81 to 2.12 mm, feasible. Table 3.3's 84 is floor(152 / 1.8): Eq. 3.14
-// (and Eq. 3.6) applied to the lengths being divided into layers. In Spira those are the lengths
+// Thesis Table 3.3 (the "trompe", 000_dbb97c2716e10cc3.txt §3.4.1.2): generatrices of 152 to 178 mm at 2 ±
+// 0.2 mm give 84 revolutions, deposits of 1.81 to 2.12 mm, feasible. Table 3.3's 84 is floor(152 / 1.8):
+// Eq. 3.14 (and Eq. 3.6) applied to the lengths being divided into layers. In Spira those are the lengths
 // left for the modulated phase once the start-up and termination ramps are laid, so this part's
 // generatrices are 152..178 mm plus the ramps (which take the same length on every generatrix).
 // The Eq. 3.6 pre-check on raw lengths 152..178 also gives 84 (LayerCount.ThesisTable33Criterion).

@@ -15,7 +15,7 @@ namespace {
 // V-notched base: z_0 = 4 (1 - |phi - pi|) mm within 1 rad of phi = pi, 0 elsewhere. Its flanks rise
 // 4 mm over 12 mm of wall, so the start-up's ramps lean on the vertical generatrices by
 // atan(1/3) = 18.4 degrees next to the base and the ramp steps there are stretched by up to
-// 1 / cos(18.4 deg) = 1.054 (spec §3.5).
+// 1 / cos(18.4 deg) = 1.054 (docs/method.md M18).
 Generatrices vNotchedCylinder()
 {
   return radialLines(120, 200, [](int, double a, int k) {

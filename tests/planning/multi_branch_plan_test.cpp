@@ -249,11 +249,9 @@ TEST(MultiBranchPlan, MonoBranchPlanIsTheStagesRunByHand)
   DecomposeInput input{tube, PartClass::Open, p.topology.lower, p.topology.upper, std::nullopt, &p.field};
   NullProgress progress;
   const DecomposeResult d = decomposer.decompose(input, params.withDefaults(decomposer.schema()), progress);
-  SpiralSettings spiral = spiralSettingsFrom(ParamSet());
-  const ProcessSettings process = processSettingsFrom(ParamSet());
-  spiral.minRevolutionLength = kPi * process.beadWidth;
-  SpiralResult s = buildSpiral(d.generatrices, spiral, progress);
-  applyProcess(s.trajectory, process);
+  const PlanSections sections = readPlanSections({});
+  SpiralResult s = buildSpiral(d.generatrices, sections.spiral, progress);
+  applyProcess(s.trajectory, sections.process);
   EXPECT_TRUE(s.trajectory == p.spiral.trajectory);
 }
 

@@ -2,8 +2,6 @@
 
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <string>
 
 #include "spira/base/error.h"
@@ -19,14 +17,6 @@ namespace fs = std::filesystem;
 fs::path kuka()
 {
   return test::sourceDir() / "resources" / "robots" / "kuka_kr16_2";
-}
-
-std::string slurp(const fs::path& file)
-{
-  std::ifstream in(file, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
 }
 
 std::string replaced(std::string text, const std::string& from, const std::string& to)
@@ -68,7 +58,7 @@ TEST(LinkMesh, ColladaUnitIsHonouredAndUpAxisIgnoredAsRvizDoes)
   const fs::path source = kuka() / "meshes" / "visual" / "link_2.dae";
   const BoundingBox metres = readLinkMesh(source, Vec3::Ones()).bounds();
   test::TempDir dir;
-  const std::string text = slurp(source);
+  const std::string text = test::readBytes(source);
   test::writeBytes(dir / "mm.dae", replaced(text, "meter=\"1\"", "meter=\"0.001\""));
   test::writeBytes(dir / "yup.dae", replaced(text, "<up_axis>Z_UP</up_axis>", "<up_axis>Y_UP</up_axis>"));
   const BoundingBox millimetres = readLinkMesh(dir / "mm.dae", Vec3::Ones()).bounds();
@@ -94,7 +84,7 @@ TEST(LinkMesh, ColladaIsReadInTheImportHelper)
   const RobotShapes s = readRobotShapes((kuka() / "robot.urdf").string(), "base_link", "tool0");
   ASSERT_FALSE(s.links.empty());
   EXPECT_TRUE(s.links.front().displayIsVisual);
-  const std::string maps = slurp("/proc/self/maps");
+  const std::string maps = test::readBytes("/proc/self/maps");
   ASSERT_NE(maps.find("libc"), std::string::npos);
   EXPECT_EQ(maps.find("libassimp"), std::string::npos) << "Assimp is loaded in the planning process";
 

@@ -6,8 +6,6 @@
 
 #include <cmath>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <string>
 
 #include "spira/base/error.h"
@@ -30,8 +28,7 @@ CellRecord kukaCell()
 
 std::string kukaUrdfText()
 {
-  std::ifstream in(test::sourceDir() / "resources" / "robots" / "kuka_kr16_2" / "robot.urdf");
-  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  return test::readBytes(test::sourceDir() / "resources" / "robots" / "kuka_kr16_2" / "robot.urdf");
 }
 
 // The KR 16-2 with axis 5 moved 50 mm up (+z of link_4) off axis 4: axes 4, 5 and 6 no longer meet.

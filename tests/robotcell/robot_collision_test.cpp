@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <filesystem>
-#include <fstream>
 
 #include "spira/base/units.h"
 #include "spira/document/cell_file.h"
@@ -51,8 +50,7 @@ TEST(LinkShapes, KukaLinksComeWithTheirCollisionMeshesInMillimetres)
 TEST(LinkShapes, MissingMeshesGetAStandInCubeAndAWarning)
 {
   test::TempDir dir;
-  std::ifstream in(robots() / "kuka_kr16_2" / "robot.urdf");
-  const std::string urdf((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string urdf = test::readBytes(robots() / "kuka_kr16_2" / "robot.urdf");
   test::writeBytes(dir / "robot.urdf", urdf);  // the meshes are not next to this copy
   const RobotShapes s = readRobotShapes((dir / "robot.urdf").string(), "base_link", "tool0");
   EXPECT_FALSE(s.warnings.empty());

@@ -17,37 +17,46 @@ namespace fs = std::filesystem;
 namespace spira {
 namespace {
 
+fs::path temporarySibling(const fs::path& target)
+{
+  return target.parent_path() / ("." + target.filename().string() + ".tmp" + randomSuffix());
+}
+
+}  // namespace
+
 std::string errnoText()
 {
   return std::strerror(errno);
 }
 
-fs::path temporarySibling(const fs::path& target)
+std::string randomSuffix()
 {
   std::random_device rd;
-  std::ostringstream name;
-  name << "." << target.filename().string() << ".tmp" << std::hex << rd();
-  return target.parent_path() / name.str();
+  std::ostringstream s;
+  s << std::hex << rd() << rd();
+  return s.str();
 }
 
-}  // namespace
+std::string writeAll(int fd, std::string_view bytes)
+{
+  size_t done = 0;
+  while (done < bytes.size()) {
+    const ssize_t n = ::write(fd, bytes.data() + done, bytes.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) return errnoText();
+    if (n == 0) return "nothing could be written";
+    done += static_cast<size_t>(n);
+  }
+  return {};
+}
 
 std::string writeSynced(const fs::path& path, std::string_view bytes)
 {
   const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
   if (fd < 0) return errnoText();
-  const char* p = bytes.data();
-  size_t left = bytes.size();
-  while (left > 0) {
-    const ssize_t n = ::write(fd, p, left);
-    if (n < 0) {
-      if (errno == EINTR) continue;
-      const std::string why = errnoText();
-      ::close(fd);
-      return why;
-    }
-    p += n;
-    left -= static_cast<size_t>(n);
+  if (const std::string why = writeAll(fd, bytes); !why.empty()) {
+    ::close(fd);
+    return why;
   }
   if (::fsync(fd) != 0) {
     const std::string why = errnoText();

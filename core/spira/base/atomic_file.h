@@ -15,6 +15,16 @@ void writeFileAtomically(const std::filesystem::path& target, std::string_view b
 // system's reason when it fails, empty on success; the caller decides what a failure means.
 std::string writeSynced(const std::filesystem::path& path, std::string_view bytes);
 
+// Writes all of `bytes` to the open descriptor `fd` (a file, a pipe), again after a signal cuts a
+// write short. Returns the system's reason when it fails, empty on success.
+std::string writeAll(int fd, std::string_view bytes);
+
+// The system's reason for the last failed call (strerror(errno)), for messages.
+std::string errnoText();
+
+// Random hex digits for the name of a temporary file or folder beside the one it will replace.
+std::string randomSuffix();
+
 // Throws IoError unless `dir` exists (or can be created) and a file can be created in it.
 // Call it before starting work whose output would otherwise be lost at the end.
 void ensureWritableDirectory(const std::filesystem::path& dir);

@@ -36,6 +36,19 @@ std::string significantText(double x, int digits)
   return o.str();
 }
 
+double roundedTo(double x, int decimals)
+{
+  const double scale = std::pow(10.0, decimals);
+  return std::round(x * scale) / scale;
+}
+
+std::string roundedText(double x, int decimals)
+{
+  std::string out;
+  appendNumber(out, roundedTo(x, decimals) + 0.0);  // + 0.0: -0 reads "0"
+  return out;
+}
+
 std::string pointText(const Vec3& p, int digits)
 {
   return "(" + fixedText(p.x(), digits) + ", " + fixedText(p.y(), digits) + ", " + fixedText(p.z(), digits) +

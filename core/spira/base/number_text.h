@@ -17,6 +17,11 @@ void appendNumber(std::string& out, long long x);
 // ("1.55", "120.5"), as a reader of a message wants them rather than bit-exact.
 std::string fixedText(double x, int digits);
 std::string significantText(double x, int digits);
+// At most `decimals` after the decimal point, without trailing zeros ("2.5", "120", "0.004"), in the
+// shortest form that reads back to the rounded value: a value a user may type back.
+std::string roundedText(double x, int decimals);
+// `x` rounded to `decimals` places, as a controller reads it back from a program's text.
+double roundedTo(double x, int decimals);
 // "(x, y, z)" with `digits` after each decimal point: a position in a message.
 std::string pointText(const Vec3& p, int digits);
 

@@ -7,8 +7,6 @@
 
 #include <cerrno>
 #include <cstdint>
-#include <cstring>
-#include <random>
 #include <set>
 #include <sstream>
 
@@ -44,11 +42,6 @@ std::string checksum(const std::string& bytes)
   std::ostringstream s;
   s << std::hex << h;
   return s.str();
-}
-
-std::string errnoText()
-{
-  return std::strerror(errno);
 }
 
 std::vector<Entry> entriesOf(const nlohmann::json& list)
@@ -112,14 +105,6 @@ void syncDirectory(const fs::path& dir)
   if (fd < 0) return;
   ::fsync(fd);
   ::close(fd);
-}
-
-std::string randomSuffix()
-{
-  std::random_device rd;
-  std::ostringstream s;
-  s << std::hex << rd() << rd();
-  return s.str();
 }
 
 // Hidden siblings of `dir` left by a run that was killed: `.<name>.spira-stage-*` (a set being

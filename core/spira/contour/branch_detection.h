@@ -6,8 +6,8 @@
 
 namespace spira {
 
-// Multi-branch detection (thesis §3.4.3): with a field grown from the base, a mono-branch part has
-// one contour per level; where the count changes the part splits (or branches merge).
+// Multi-branch detection (thesis 000_dbb97c2716e10cc3.txt §3.4.3): with a field grown from the base, a
+// mono-branch part has one contour per level; where the count changes the part splits (or branches merge).
 struct BranchChange {
   size_t levelIndex = 0;  // first level with the new count
   double value = 0.0;     // its field value

@@ -8,9 +8,9 @@
 namespace spira {
 
 // What counts as a branch when the iso-contours of a field grown from the base are counted
-// (thesis §3.4.3, spec §4.2): a closed contour at least `minPerimeter` long. Shorter loops are a
-// lone field extremum (mesh noise, the several maxima of a closure zone) or a wall narrower than
-// the bead, which cannot be built as a branch of its own.
+// (thesis 000_dbb97c2716e10cc3.txt §3.4.3): a closed contour at least `minPerimeter` long. Shorter loops are
+// a lone field extremum (mesh noise, the several maxima of a closure zone) or a wall narrower than the bead,
+// which cannot be built as a branch of its own.
 struct BranchScanOptions {
   double minPerimeter = 0.0;  // mm; <= 0: 3 mean edge lengths
   // Spacing of the scanned levels in field units; <= 0: the mean edge length times the field's

@@ -8,8 +8,8 @@
 
 namespace spira {
 
-// The principal generatrix of thesis §2.4.1 step 5. Every contour has the same number n of
-// points, in the same turning sense. From point k of contour c a greedy chain steps to the point
+// The principal generatrix of thesis 000_dbb97c2716e10cc3.txt §3.3.2.4, steps 1-4. Every contour has the same
+// number n of points, in the same turning sense. From point k of contour c a greedy chain steps to the point
 // of contour c + 1 nearest to it, up to the last contour (and then to the closure point, when
 // there is one). The start point on the first contour whose chain is shortest defines the
 // principal generatrix; generatrix m then uses point (k_c + m) mod n of contour c, where k_c is

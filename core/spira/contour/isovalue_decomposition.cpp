@@ -2,11 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 
 #include <tbb/parallel_for.h>
 
 #include "spira/base/error.h"
+#include "spira/base/number_text.h"
 #include "spira/base/units.h"
 #include "spira/contour/branch_detection.h"
 #include "spira/contour/generatrix_chain.h"
@@ -16,14 +16,6 @@
 namespace spira {
 
 namespace {
-
-std::string num(double v, int precision = 4)
-{
-  std::ostringstream s;
-  s.precision(precision);
-  s << v;
-  return s.str();
-}
 
 struct Range {
   double lo = 0.0, hi = 0.0;
@@ -54,8 +46,8 @@ size_t dropSpecks(IsoLevel& level, double minLength)
 [[noreturn]] void refuseBranches(const IsoLevel& level, size_t before)
 {
   const size_t after = level.contours.size();
-  const std::string where =
-      "at field value " + num(level.value) + " (about z = " + num(meanZ(level)) + " mm)";
+  const std::string where = "at field value " + significantText(level.value, 4) +
+                            " (about z = " + significantText(meanZ(level), 4) + " mm)";
   std::string what;
   if (after == 0)
     what = "the field has no iso-contour " + where +
@@ -147,23 +139,23 @@ IsoDecomposition decomposeByIsoValues(const TriangleMesh& mesh, const std::vecto
     const Range up = fieldOn(upper->vertices, field);
     top = up.lo;
     if (up.hi - up.lo > 0.05 * (top - base.hi))
-      out.warnings.push_back("the field varies by " + num(up.hi - up.lo) +
+      out.warnings.push_back("the field varies by " + significantText(up.hi - up.lo, 4) +
                              " along the upper edge; the last contours may run into it");
   }
   if (!(top > base.hi))
-    throw InputError("the field does not grow from the lower edge (" + num(base.hi) + ") to the " +
-                         (upper ? "upper edge (" : "top (") + num(top) + ")",
+    throw InputError("the field does not grow from the lower edge (" + significantText(base.hi, 4) +
+                         ") to the " + (upper ? "upper edge (" : "top (") + significantText(top, 4) + ")",
                      fieldHint);
   if (base.hi - base.lo > 0.05 * (top - base.hi))
-    out.warnings.push_back("the field varies by " + num(base.hi - base.lo) +
+    out.warnings.push_back("the field varies by " + significantText(base.hi - base.lo, 4) +
                            " along the lower edge; the first contours may be uneven");
 
   const double gradient = meanFieldGradient(mesh, field);
   const double stepsWanted = gradient > 0 ? (top - base.hi) / (spacing * gradient) : 2.0;
   size_t K = static_cast<size_t>(std::max(2.0, std::ceil(stepsWanted - 1e-9)));
   if (K > options.maxLevels) {
-    out.warnings.push_back("level spacing " + num(spacing) + " mm asks for " + std::to_string(K) +
-                           " contours; using " + std::to_string(options.maxLevels));
+    out.warnings.push_back("level spacing " + significantText(spacing, 4) + " mm asks for " +
+                           std::to_string(K) + " contours; using " + std::to_string(options.maxLevels));
     K = options.maxLevels;
   }
   std::vector<double> values(K - 1);
@@ -193,7 +185,7 @@ IsoDecomposition decomposeByIsoValues(const TriangleMesh& mesh, const std::vecto
       for (const auto& c : levels[k].contours) allSmall = allSmall && c.length() < small;
     if (allSmall) {
       out.warnings.push_back("the field has several maxima near its top (field value " +
-                             num(levels[firstOff].value) + "); the " +
+                             significantText(levels[firstOff].value, 4) + "); the " +
                              std::to_string(levels.size() - firstOff) +
                              " contours above were dropped and the generatrices end at the closure point");
       levels.resize(firstOff);
@@ -202,8 +194,8 @@ IsoDecomposition decomposeByIsoValues(const TriangleMesh& mesh, const std::vecto
   for (size_t k = 0; k < levels.size(); ++k) {
     if (levels[k].contours.size() != 1) refuseBranches(levels[k], k == 0 ? 1 : levels[k - 1].contours.size());
     if (!levels[k].contours[0].closed)
-      throw InputError("the iso-contour at field value " + num(levels[k].value) +
-                           " (about z = " + num(meanZ(levels[k])) +
+      throw InputError("the iso-contour at field value " + significantText(levels[k].value, 4) +
+                           " (about z = " + significantText(meanZ(levels[k]), 4) +
                            " mm) runs into a free edge instead of going around the part",
                        "the field must be constant along each free edge: " + fieldHint);
   }

@@ -35,10 +35,10 @@ struct IsoDecomposition {
   double levelSpacing = 0.0;           // mm, the spacing actually used
 };
 
-// Iso-value decomposition (thesis §2.4): the iso-contours of `field` from the lower edge up to the
-// upper edge (open parts, `upper` given; the field should be the harmonic field, constant on both
-// edges) or to just below the field's maximum (closed parts; the field should be the geodesic
-// distance from the lower edge). The base is resampled to n points evenly spaced; every contour
+// Iso-value decomposition (thesis 000_dbb97c2716e10cc3.txt §3.3.2.4): the iso-contours of `field` from the
+// lower edge up to the upper edge (open parts, `upper` given; the field should be the harmonic field,
+// constant on both edges) or to just below the field's maximum (closed parts; the field should be the
+// geodesic distance from the lower edge). The base is resampled to n points evenly spaced; every contour
 // above is resampled to n points parameterised by the one below it (least-shear correspondence,
 // loop_following.h), so point k of each contour lies where point k of the one below lands along
 // the field's gradient, and the generatrices run orthogonal to the contours. The principal

@@ -7,8 +7,8 @@ namespace spira {
 // Robot controllers write orientations as three angles. KUKA and FANUC use the same matrix,
 //   R = Rz(z) * Ry(y) * Rx(x),
 // read as intrinsic rotations Z, Y', X'' (KUKA A, B, C) or as fixed-axis rotations X, Y, Z
-// (FANUC W, P, R). So (A, B, C)_KUKA = (R, P, W)_FANUC for one matrix (spec 3.5). The angles are
-// always computed from the full rotation matrix, never copied from another convention.
+// (FANUC W, P, R). So (A, B, C)_KUKA = (R, P, W)_FANUC for one matrix (004_bd0df31205c0c3c0.txt Appendix B).
+// The angles are always computed from the full rotation matrix, never copied from another convention.
 //
 // Ranges: z and x in (-pi, pi], y in [-pi/2, pi/2]. At gimbal lock (y = +-pi/2, where only z - x
 // or z + x is defined) x is set to 0 and z carries the whole rotation about the vertical axis.

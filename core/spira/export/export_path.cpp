@@ -16,14 +16,6 @@ namespace {
 // nearly still torch would otherwise ask for a zero speed, which controllers refuse.
 constexpr double kMinSpeed = 0.01;
 
-// A number as people read it in messages: at most three decimals, no trailing zeros.
-std::string num(double x)
-{
-  std::string out;
-  appendNumber(out, roundedTo(x, 3) + 0.0);
-  return out;
-}
-
 std::string pointText(size_t i)
 {
   return "point " + std::to_string(i);
@@ -45,11 +37,11 @@ void checkChannels(const TrajectoryPoint& p, size_t i)
     throw InputError("the plan's " + pointText(i) + " has a non-finite position or direction",
                      "plan the part again");
   if (!(p.travelSpeed > 0.0) || !std::isfinite(p.travelSpeed))
-    throw InputError("the plan's " + pointText(i) + " has travel speed " + num(p.travelSpeed) +
+    throw InputError("the plan's " + pointText(i) + " has travel speed " + roundedText(p.travelSpeed, 3) +
                          " mm/s; every point needs a positive speed",
                      "check the process settings (travel speed) and plan again");
   if (!(p.wireFeed >= 0.0) || !std::isfinite(p.wireFeed))
-    throw InputError("the plan's " + pointText(i) + " has wire feed " + num(p.wireFeed) + " mm/s",
+    throw InputError("the plan's " + pointText(i) + " has wire feed " + roundedText(p.wireFeed, 3) + " mm/s",
                      "check the process settings (wire feed) and plan again");
 }
 
@@ -93,8 +85,8 @@ struct JointSpeedCheck {
     if (!namedLimit(limit) || !(limit.maxSpeedDegPerS > 0.0) || rate <= limit.maxSpeedDegPerS * (1.0 + 1e-9))
       return;
     if (count++ == 0)
-      first = limit.name + " at " + num(std::ceil(rate)) + " deg/s into " + pointText(point) + ", limit " +
-              num(limit.maxSpeedDegPerS) + " deg/s";
+      first = limit.name + " at " + roundedText(std::ceil(rate), 3) + " deg/s into " + pointText(point) +
+              ", limit " + roundedText(limit.maxSpeedDegPerS, 3) + " deg/s";
   }
 };
 
@@ -295,9 +287,9 @@ ExportPath prepareExportPath(const ExportInput& input, const PathOptions& option
       path.points[i].speed = constant;
     }
     if (hi - lo > 1e-6 * hi)
-      path.warnings.push_back("the plan's speed varies from " + num(lo) + " to " + num(hi) +
-                              " mm/s but the analog process mode writes one speed, " + num(constant) +
-                              " mm/s");
+      path.warnings.push_back("the plan's speed varies from " + roundedText(lo, 3) + " to " +
+                              roundedText(hi, 3) + " mm/s but the analog process mode writes one speed, " +
+                              roundedText(constant, 3) + " mm/s");
   }
   markAnalogSetpoints(options, path);
   if (joints) checkJointMotion(*joints, path);

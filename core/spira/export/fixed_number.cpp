@@ -21,10 +21,4 @@ void appendFixed(std::string& out, double x, int decimals, int width)
   out.append(begin, length);
 }
 
-double roundedTo(double x, int decimals)
-{
-  const double scale = std::pow(10.0, decimals);
-  return std::round(x * scale) / scale;
-}
-
 }  // namespace spira

@@ -9,7 +9,8 @@ namespace spira {
 // Helpers on per-vertex scalar fields (values[v] for every vertex v of the mesh).
 
 // The vertex with the largest finite value (the lowest id among equals); -1 if there is none.
-// For a distance from the base it is the closure point of a closed part (thesis section 4.1).
+// For a distance from the base it is the closure point of a closed part (thesis 000_dbb97c2716e10cc3.txt
+// §3.3.2.2, Eq. 3.10).
 int argmaxVertex(const std::vector<double>& values);
 
 // The field at a point of `face` given by barycentric weights (w0, w1, w2) of its vertices,

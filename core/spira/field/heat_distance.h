@@ -13,7 +13,8 @@ struct HeatDistanceOptions {
   double timeScale = 1.0;
   // On free edges that are not sources, average the Neumann solution and the Dirichlet
   // solution (u = 0 there), which makes the distance behave as if the boundary were not there
-  // (Crane et al. 2013, thesis section 2.3). False keeps the Neumann solution alone, as CGAL does.
+  // (Crane et al. 2013; thesis 000_dbb97c2716e10cc3.txt §3.3.2.3). False keeps the Neumann solution alone, as
+  // CGAL does.
   bool averageBoundaryConditions = true;
   // Poisson solves after the first, each with the unit directions of the previous distance
   // instead of those of the heat flow. Each costs one pass over the faces and one solve with
@@ -37,11 +38,10 @@ struct HeatDistanceSetupStats {
   double factorNonZeros = 0.0;   // entries of one Cholesky factor
 };
 
-// Geodesic distance by the heat method (Crane, Weischedel & Wardetzky 2013; thesis section 2.3
-// and Appendix A): one heat step (A - t L_C) u = delta_sources, the unit field X = -grad u / |grad u|
-// per face, its integrated divergence b, and the Poisson equation L_C phi = b; then
-// `refinementSteps` more Poisson solves with X = grad phi / |grad phi|, and a shift so that the
-// mean of phi over the sources is 0.
+// Geodesic distance by the heat method (Crane, Weischedel & Wardetzky 2013; thesis 000_dbb97c2716e10cc3.txt
+// §3.3.2.3 and Appendix A): one heat step (A - t L_C) u = delta_sources, the unit field X = -grad u / |grad
+// u| per face, its integrated divergence b, and the Poisson equation L_C phi = b; then `refinementSteps` more
+// Poisson solves with X = grad phi / |grad phi|, and a shift so that the mean of phi over the sources is 0.
 //
 // The constructor does everything that depends on the mesh only: cotan operators, a
 // fill-reducing order, one symbolic analysis and the Cholesky factorisations of the heat and

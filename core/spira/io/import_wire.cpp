@@ -2,10 +2,10 @@
 
 #include <unistd.h>
 
-#include <cerrno>
 #include <cstring>
 #include <limits>
 
+#include "spira/base/atomic_file.h"
 #include "spira/base/error.h"
 
 namespace spira::wire {
@@ -99,14 +99,8 @@ void Writer::frame(char tag, const std::string& payload)
   bytes.push_back(tag);
   put<uint64_t>(bytes, payload.size());
   bytes.append(payload);
-  size_t done = 0;
-  while (done < bytes.size()) {
-    const ssize_t n = ::write(fd_, bytes.data() + done, bytes.size() - done);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0)
-      throw IoError("the import helper cannot write its result", "the program that started it stopped");
-    done += static_cast<size_t>(n);
-  }
+  if (!writeAll(fd_, bytes).empty())
+    throw IoError("the import helper cannot write its result", "the program that started it stopped");
 }
 
 void Writer::header()

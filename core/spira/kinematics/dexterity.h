@@ -16,9 +16,9 @@ double singularValueRatio(const Mat3& m);
 // so det J = det A * det C and the arm is singular exactly when A (shoulder or elbow singularity)
 // or C (wrist singularity) is. Dexterity = min(ratio(A), ratio(C)) with ratio = sigma_min/sigma_max:
 // unit-free, 1 at best, 0 at any singularity. This is the thesis' omega_2 = xi_min/xi_max
-// (Chalvin Eq. 1.8) applied to a translational and a rotational block separately, as spec section
-// 2.3 suggests, but on the decoupled 3x3 blocks: the 3x6 blocks of a 6R arm keep full rank at its
-// singularities (the other three joints still move the TCP), so they could never reach 0.
+// (004_bd0df31205c0c3c0.txt §1.4.2, Eq. 1.8) applied to a translational and a rotational block separately
+// (its Fig. 4.4 shows the two), but on the decoupled 3x3 blocks: the 3x6 blocks of a 6R arm keep full rank at
+// its singularities (the other three joints still move the TCP), so they could never reach 0.
 double armDexterity(const Eigen::Matrix<double, 6, 6>& jacobianAtWristCentre);
 
 }  // namespace spira

@@ -13,11 +13,12 @@ namespace spira {
 // A 2-axis positioner (e.g. positioner_2axis: E1 tilt about Y, E2 rotate about the table normal)
 // read from a 2-joint chain from its base to its table frame. Axis values are URDF radians.
 //
-// Its inverse kinematics is the flat-position problem of welding (Chalvin 2020, Eq. C.24-C.25):
-// turn a direction given in the table frame (the part's build direction b) to the vertical of the
-// positioner base. For positioner_2axis, R_base_table = Ry(e1) Rz(e2), and the thesis' closed form
+// Its inverse kinematics is the flat-position problem of welding (Chalvin, 004_bd0df31205c0c3c0.txt Appendix
+// C.2.3, Eq. C.24-C.25): turn a direction given in the table frame (the part's build direction b) to the
+// vertical of the positioner base. For positioner_2axis, R_base_table = Ry(e1) Rz(e2), and the thesis' closed
+// form
 //   e1 = atan2(sqrt(bx^2 + by^2), bz),  e2 = atan2(by, -bx)
-// (spec section 3.4 item 6: the printed R_X, R_Y, R_Z are b's components) is one of the two
+// (the printed R_X, R_Y, R_Z are b's components; docs/method.md M22) is one of the two
 // solutions. Here it is solved for any two non-parallel axes (Paden-Kahan subproblem 2 on the
 // chain's axes at zero), so the other branch (-e1, e2 + pi) and 2 pi turns of the rotation come out
 // too and the one nearest the previous axis values is taken.

@@ -1,25 +1,20 @@
 #include "spira/mesh/mesh_report.h"
 
 #include <cmath>
-#include <cstdio>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
+
+#include "spira/base/number_text.h"
 
 namespace spira {
 
 namespace {
 
-std::string num(double v)
-{
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.6g", v);
-  return buf;
-}
-
 std::string point(const Vec3& p)
 {
-  return "(" + num(p.x()) + ", " + num(p.y()) + ", " + num(p.z()) + ")";
+  return "(" + significantText(p.x(), 6) + ", " + significantText(p.y(), 6) + ", " +
+         significantText(p.z(), 6) + ")";
 }
 
 // Human-readable issue names for the text report, singular and plural; meshIssueName() gives the
@@ -145,12 +140,14 @@ std::string MeshReport::toText() const
     s << "Bounding box: empty\n";
   } else {
     const Vec3 size = bounds.size();
-    s << "Bounding box: x " << num(bounds.min.x()) << " .. " << num(bounds.max.x()) << ", y "
-      << num(bounds.min.y()) << " .. " << num(bounds.max.y()) << ", z " << num(bounds.min.z()) << " .. "
-      << num(bounds.max.z()) << " mm (size " << num(size.x()) << " x " << num(size.y()) << " x "
-      << num(size.z()) << " mm)\n";
+    s << "Bounding box: x " << significantText(bounds.min.x(), 6) << " .. "
+      << significantText(bounds.max.x(), 6) << ", y " << significantText(bounds.min.y(), 6) << " .. "
+      << significantText(bounds.max.y(), 6) << ", z " << significantText(bounds.min.z(), 6) << " .. "
+      << significantText(bounds.max.z(), 6) << " mm (size " << significantText(size.x(), 6) << " x "
+      << significantText(size.y(), 6) << " x " << significantText(size.z(), 6) << " mm)\n";
   }
-  s << "Surface area: " << num(area) << " mm^2; mean edge length " << num(meanEdgeLength) << " mm\n";
+  s << "Surface area: " << significantText(area, 6) << " mm^2; mean edge length "
+    << significantText(meanEdgeLength, 6) << " mm\n";
   if (issues.empty()) s << "Issues: none\n";
   for (const MeshIssue& i : issues) {
     s << "Issue: " << i.count << " " << issueLabel(i.kind, i.count);
@@ -162,8 +159,9 @@ std::string MeshReport::toText() const
   s << "Boundary loops: " << boundaryLoops.size() << "\n";
   for (size_t k = 0; k < boundaryLoops.size(); ++k) {
     const BoundaryLoop& l = boundaryLoops[k];
-    s << "  loop " << k + 1 << ": " << l.vertices.size() << " vertices, length " << num(l.length) << " mm, z "
-      << num(l.zMin) << " .. " << num(l.zMax) << " mm" << (l.closed ? "" : " (not closed)") << "\n";
+    s << "  loop " << k + 1 << ": " << l.vertices.size() << " vertices, length "
+      << significantText(l.length, 6) << " mm, z " << significantText(l.zMin, 6) << " .. "
+      << significantText(l.zMax, 6) << " mm" << (l.closed ? "" : " (not closed)") << "\n";
   }
   s << "Connected components: " << componentCount << "\n";
   s << "Part class: " << className() << " - " << classReason << "\n";

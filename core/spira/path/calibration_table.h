@@ -6,8 +6,8 @@
 
 namespace spira {
 
-// A measured deposit-height -> travel-speed relation at constant wire feed (thesis §4.3.1: seven
-// beads at different speeds, piecewise-linear interpolation between them). Heights are strictly
+// A measured deposit-height -> travel-speed relation at constant wire feed (thesis 000_dbb97c2716e10cc3.txt
+// §4.3.1: seven beads at different speeds, piecewise-linear interpolation between them). Heights are strictly
 // increasing and travel speeds strictly decreasing with them: a thicker bead needs a slower torch.
 class CalibrationTable {
  public:

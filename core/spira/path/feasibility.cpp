@@ -31,6 +31,9 @@ void checkFeasibility(const Trajectory& path, double h, double hMin, double hMax
                       bool closurePointLast, SpiralReport& report)
 {
   const double tol = tolerance * h;
+  report.h = h;
+  report.hMin = hMin;
+  report.hMax = hMax;
   report.heightTolerance = tol;
   report.violations.clear();
   report.modulatedViolations = 0;

@@ -28,18 +28,17 @@ struct Layout {
 };
 
 // Ramp steps are nominal deposits, but the true height is the step times cos(theta), theta the
-// angle between the generatrix and the build direction (spec §3.5). Where the layers lean on the
-// generatrices (a tilted or non-planar base such as a branch's saddle cut, a non-planar upper edge,
-// a converging dome) a ramp step of h_min would lay less than h_min. Each ramp point therefore gets
-// its own stretch 1 / cos(theta), per generatrix AND per revolution: the lean is largest on the
-// revolutions next to the leaning edge and fades away from it, so one factor per generatrix (the
-// largest) over-stretches the revolutions that do not lean, and the surplus climb, different from
-// one generatrix to the next, leaves a step in the layer that the modulated phase carries up (spec
-// §3.2-3.3: the start-up must remove a height step, not make one). See stretchSteps().
-// The modulated revolutions get the same per-point stretch, normalised along each generatrix so
-// that they still share its modulated length: a generatrix whose layers lean on some revolutions
-// (an arm's first layers above its saddle cut) lays longer steps there and shorter ones where they
-// do not, every layer of it at the one true height its length allows.
+// angle between the generatrix and the build direction (000_dbb97c2716e10cc3.txt §3.3.4). Where the layers
+// lean on the generatrices (a tilted or non-planar base such as a branch's saddle cut, a non-planar upper
+// edge, a converging dome) a ramp step of h_min would lay less than h_min. Each ramp point therefore gets its
+// own stretch 1 / cos(theta), per generatrix AND per revolution: the lean is largest on the revolutions next
+// to the leaning edge and fades away from it, so one factor per generatrix (the largest) over-stretches the
+// revolutions that do not lean, and the surplus climb, different from one generatrix to the next, leaves a
+// step in the layer that the modulated phase carries up (000_dbb97c2716e10cc3.txt §3.2.4: the start-up must
+// remove a height step, not make one). See stretchSteps(). The modulated revolutions get the same per-point
+// stretch, normalised along each generatrix so that they still share its modulated length: a generatrix whose
+// layers lean on some revolutions (an arm's first layers above its saddle cut) lays longer steps there and
+// shorter ones where they do not, every layer of it at the one true height its length allows.
 struct StepScales {
   int n = 0;
   int layers = 0;                       // modulated revolutions `mod` was measured on
@@ -340,7 +339,7 @@ void smoothAlongPath(double* row, int n, int passes)
 // heights within 0.1 %), they all take the largest. Per-revolution scales that differ by such
 // noise still break the design's ramp lengths (start plus end the same on every generatrix) by a
 // little that differs from one generatrix to the next, and close to a pole, where neighbours are
-// fractions of a millimetre apart, that little tilts the layers (spec §3.5) more than it gains.
+// fractions of a millimetre apart, that little tilts the layers (docs/method.md M18) more than it gains.
 void flattenNearlyUniform(std::vector<double>& scales, int n, double flat)
 {
   const size_t revs = scales.size() / static_cast<size_t>(n);
@@ -357,7 +356,7 @@ void flattenNearlyUniform(std::vector<double>& scales, int n, double flat)
 
 // One step of the ramp stretch's fixed-point iteration (see StepScales). Each ramp point's target
 // scale is 1 / cos(theta) measured on `pass`, the layout built with the current scales, so that its
-// true height (nominal step x scale x cos(theta), spec §3.5) is the nominal one. Stretching a point
+// true height (nominal step x scale x cos(theta), docs/method.md M18) is the nominal one. Stretching a point
 // moves it along its generatrix, which turns its layer and changes theta, so the iteration is
 // damped (the scales move half-way to their targets), smoothed along the revolution
 // (smoothAlongPath, kSmoothPasses: on the Y tube's arms this took the rows outside the window from

@@ -8,7 +8,7 @@
 namespace spira {
 
 // Discretises generatrices into one continuous spiral with a locally modulated deposit (thesis
-// §3.2-3.3, spec §3):
+// 000_dbb97c2716e10cc3.txt §3.2.3-3.3.4; docs/method.md §5):
 //  1. start-up: n_steplayer revolutions of ramps (StartupProfile) that remove the height step at
 //     the spiral start;
 //  2. modulated phase: the length l_i each generatrix has left (after the start-up and, with
@@ -32,13 +32,13 @@ namespace spira {
 // report checks feasibility (Eq. 3.6 and 3.15) on every point. Where the layers lean on the
 // generatrices (cos(theta) < 1 - 1e-4: a tilted or non-planar base such as a branch's saddle cut, a
 // non-planar upper edge, a converging dome) the steps are stretched point by point, per generatrix
-// and per revolution, by 1 / cos(theta): the ramps so that their true heights stay nominal (spec
-// §3.2, §3.5), the modulated revolutions then scaled back so that each generatrix still lays its
-// layers in its modulated length, at one true height. Stretching moves the points and so changes
-// theta: the stretch is iterated to its fixed point (damped, smooth between neighbouring
-// generatrices, at most 12 layouts), and the layout with the fewest window violations is kept.
-// The seam goes on the generatrix that leans least along the travel (seam_placement.h); points keep
-// the given generatrix numbers. See docs/spiral-heights.md.
+// and per revolution, by 1 / cos(theta): the ramps so that their true heights stay nominal
+// (docs/method.md M14, M18), the modulated revolutions then scaled back so that each generatrix still lays
+// its layers in its modulated length, at one true height. Stretching moves the points and so changes theta:
+// the stretch is iterated to its fixed point (damped, smooth between neighbouring generatrices, at most 12
+// layouts), and the layout with the fewest window violations is kept. The seam goes on the generatrix that
+// leans least along the travel (seam_placement.h); points keep the given generatrix numbers. See
+// docs/spiral-heights.md.
 //
 // Throws InputError for unusable input (see StartupProfile, spiral_input.h) and for generatrices
 // too short to hold the start-up, the termination and one layer of h_min. An infeasible window is

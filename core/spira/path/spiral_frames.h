@@ -6,9 +6,9 @@
 
 namespace spira {
 
-// The thesis's "Frenet" frame at every point (§3.3.4): n is the surface normal already stored in
-// the point, t the unit direction to the next point and b = n x t the build direction. The chord to
-// the next point is projected into the tangent plane before normalising, so (t, b, n) is an
+// The thesis's "Frenet" frame at every point (000_dbb97c2716e10cc3.txt §3.3.4): n is the surface normal
+// already stored in the point, t the unit direction to the next point and b = n x t the build direction. The
+// chord to the next point is projected into the tangent plane before normalising, so (t, b, n) is an
 // orthonormal, right-handed frame the torch can use directly. The last point, and points that
 // coincide with the next one, take the tangent of the nearest point before them (after them at the
 // very start).
@@ -27,7 +27,8 @@ void computeFrames(Trajectory& path);
 // it did.
 bool orientBuildDirection(Trajectory& path, const std::vector<Vec3>& steps);
 
-// True deposit heights, thesis Eq. 3.5 with d_i in place of the misprinted d_1: h = d cos(theta),
+// True deposit heights, 000_dbb97c2716e10cc3.txt §3.3.4 (unnumbered, docs/method.md M18) with d_i
+// in place of the misprinted d_1: h = d cos(theta),
 // theta the angle between steps[q] and b, with d the length of the chord steps[q], i.e.
 // h = steps[q] . b. The thesis's d is the arc stepped along the generatrix; on its straight
 // generatrices the two agree, but across a bend the arc is longer than what lies between the two

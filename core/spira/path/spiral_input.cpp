@@ -1,22 +1,15 @@
 #include "spira/path/spiral_input.h"
 
 #include <cmath>
-#include <sstream>
 #include <string>
 
 #include "spira/base/error.h"
+#include "spira/base/number_text.h"
 #include "spira/path/surface_normals.h"
 
 namespace spira {
 
 namespace {
-
-std::string str(double v)
-{
-  std::ostringstream s;
-  s << v;
-  return s.str();
-}
 
 bool finite(const Vec3& v)
 {
@@ -49,10 +42,10 @@ void checkLines(const Generatrices& g, const SpiralSettings& s)
     if (g.hasClosurePoint) {
       const double gap = (line.back() - g.closurePoint).norm();
       if (!(gap <= 0.5 * s.hMin))
-        throw InputError(which + " ends " + str(gap) +
+        throw InputError(which + " ends " + significantText(gap, 6) +
                              " mm from the closure point; on a closed part every "
                              "generatrix must end there (within h_min / 2 = " +
-                             str(0.5 * s.hMin) + " mm)",
+                             significantText(0.5 * s.hMin, 6) + " mm)",
                          "re-run the closure search and the decomposition, or mark the part as open");
     }
   }
@@ -84,12 +77,13 @@ void checkNormals(const Generatrices& g)
 void validateSpiralSettings(const SpiralSettings& s)
 {
   if (!std::isfinite(s.heightTolerance) || s.heightTolerance < 0.0)
-    throw InputError("the height tolerance must be zero or positive, not " + str(s.heightTolerance),
-                     "use a small fraction of h such as 0.01");
-  if (!std::isfinite(s.minRevolutionLength) || s.minRevolutionLength < 0.0)
     throw InputError(
-        "the minimum revolution length must be zero or positive, not " + str(s.minRevolutionLength),
-        "use 0 (one layer height) or a length in mm");
+        "the height tolerance must be zero or positive, not " + significantText(s.heightTolerance, 6),
+        "use a small fraction of h such as 0.01");
+  if (!std::isfinite(s.minRevolutionLength) || s.minRevolutionLength < 0.0)
+    throw InputError("the minimum revolution length must be zero or positive, not " +
+                         significantText(s.minRevolutionLength, 6),
+                     "use 0 (one layer height) or a length in mm");
 }
 
 PreparedGeneratrices prepareGeneratrices(const Generatrices& g, const SpiralSettings& s)

@@ -67,7 +67,8 @@ struct SpiralReport {
   // modulatedViolations.) Ramp revolutions use nominal steps inside the window by construction, and
   // the seam frames (computeFrames) keep their true heights there.
   bool feasible = false;
-  double heightTolerance = 0.0;  // mm
+  double h = 0.0, hMin = 0.0, hMax = 0.0;  // the window the spiral was planned for, mm
+  double heightTolerance = 0.0;            // mm
   std::vector<HeightViolation> violations;
   size_t modulatedViolations = 0;
   // Closed parts: arc length along generatrix 0 from the last kept revolution to the closure point,

@@ -11,7 +11,8 @@ enum class LayerMode {
   // Thesis Eq. 3.14: n = floor(min(L) / h_min). The shortest generatrix gets about h_min, the
   // mean deposit falls below h.
   Floor,
-  // Centres the mean deposit on h (thesis §4.3: "the mean is brought back to h"). n is the count
+  // Centres the mean deposit on h (000_dbb97c2716e10cc3.txt §4.3: "the mean is brought back to h"). n is the
+  // count
   // whose mean step mean(L) / n lies closest to h (floor or ceil of mean(L) / h, i.e. round()
   // except where 1/n's curvature tips a near-half case), then clamped into the counts for which
   // every step d_i = l_i / n lies in the window, [ceil(max L / h_max), floor(min L / h_min)],
@@ -27,7 +28,8 @@ enum class Termination {
   // closure point). Ramps and termination take the same length on every generatrix, so on a
   // cylinder every modulated step is the same.
   Ramps,
-  // The thesis as written (§3.3.3): no termination revolutions; d_i = l_i / n absorbs the start-up
+  // The thesis as written (000_dbb97c2716e10cc3.txt §3.3.3): no termination revolutions; d_i = l_i / n
+  // absorbs the start-up
   // climb over the whole build. The last revolution still lies on the upper edge, but the seam
   // rise grows to about d over the build, and the seam points' true heights shrink with it.
   Absorb,

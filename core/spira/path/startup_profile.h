@@ -4,7 +4,8 @@ namespace spira {
 
 // Where the transition revolution of the start-up ends.
 enum class StartupTransition {
-  // h_min -> h, as the thesis's Figs 3.5 and 4.7 show (spec §3.2). The spiral then climbs
+  // h_min -> h, as the thesis's Figs 3.5 and 4.7 show (000_dbb97c2716e10cc3.txt §3.2.4, §4.3). The spiral
+  // then climbs
   // S = j_full Δ + h - h_min per revolution whatever the layer step d of the modulated phase, so
   // every seam rises d - S in one segment: 0.1 h at ±10 % when d = h, about 0 when d = h_min.
   ToNominal,
@@ -18,12 +19,12 @@ enum class StartupTransition {
   UniformHelix,
 };
 
-// Start-up and termination revolutions of the spiral (thesis §3.2.4, Table 3.1).
+// Start-up and termination revolutions of the spiral (thesis 000_dbb97c2716e10cc3.txt §3.2.4, Table 3.1).
 //
 // A deposit can never be thinner than h_min, so the spiral cannot start at height 0: the first
 // revolution ramps from h_min (first generatrix) to h_max (last generatrix), which leaves a height
 // step where the next revolution starts. Each ramp adds Δ = h_max - h_min to the climb of a
-// revolution (Eq. 3.2: Δh_j = j Δ). The rule used here (spec §3.2 "Implementable rule") is
+// revolution (Eq. 3.2: Δh_j = j Δ). The rule used here (docs/method.md M14) is
 //   j_full = max{ j >= 0 : j Δ < h }    full ramps h_min -> h_max
 //   one transition ramp h_min -> h_T   (h_T = h by default, see StartupTransition)
 //   one constant revolution at h       (at c with UniformHelix)

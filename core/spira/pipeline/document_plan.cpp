@@ -121,15 +121,9 @@ DocumentPlan planDocument(const DocumentState& snapshot, const PluginRegistry& r
   out.windowViolations = plan.spiral.report.violations.size();
   out.limitViolations = plan.process.violations.size();
 
-  const SpiralSettings window = readPlanSections(settings.params).spiral;
   nlohmann::json full = planReportJson(plan, settings.decomposerId);
   out.report = full;
   if (out.advice) out.report["advice"] = adviceJson(*out.advice);
-  full["h"] = window.h;
-  full["h_min"] = window.hMin;
-  full["h_max"] = window.hMax;
-  full["height_tolerance_mm"] = plan.spiral.report.heightTolerance;
-  full["collapsed_revolutions"] = plan.spiral.report.collapsedRevolutions;
 
   Results& r = out.results;
   auto field = std::make_shared<FieldResult>();

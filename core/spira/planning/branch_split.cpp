@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <sstream>
 
 #include "spira/base/error.h"
+#include "spira/base/number_text.h"
 #include "spira/contour/branch_levels.h"
 #include "spira/contour/mesh_split.h"
 #include "spira/field/heat_distance.h"
@@ -14,14 +14,6 @@
 namespace spira {
 
 namespace {
-
-std::string num(double v)
-{
-  std::ostringstream s;
-  s.precision(4);
-  s << v;
-  return s.str();
-}
 
 double meanOn(const std::vector<int>& vertices, const std::vector<double>& field)
 {
@@ -93,7 +85,7 @@ SaddleCut cutAtSaddle(const BranchPiece& piece, const std::vector<double>& cutFi
   std::vector<int> component;
   const int count = faceComponents(mesh, above, component);
   if (static_cast<size_t>(count) < branchCount)
-    throw InputError("the branches that part at " + num(0.5 * (trunkTop + branchBase)) +
+    throw InputError("the branches that part at " + significantText(0.5 * (trunkTop + branchBase), 4) +
                          " mm from the base join again further up: the part has a hole through it, "
                          "not a tree of branches",
                      "split the part into pieces without loops in the CAD tool and plan each one");
@@ -174,7 +166,7 @@ class Splitter {
       if (branches >= 2) break;
     }
     if (branches < 2)
-      throw AlgorithmError("the part branches at " + num(s.saddle) + " mm from the base" +
+      throw AlgorithmError("the part branches at " + significantText(s.saddle, 4) + " mm from the base" +
                                " but its branches could not be told apart above it",
                            "remesh the part more finely around the junction of its branches");
     SaddleCut cut = cutAtSaddle(piece, cutField, saddle - half, saddle + half, branches);

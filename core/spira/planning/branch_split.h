@@ -61,8 +61,8 @@ struct BranchDecomposition {
   bool depthLimited = false;  // a piece still branches but maxDepth was reached
 };
 
-// Splits a part into mono-branch sub-parts (thesis §3.4.3, spec §4.2). The geodesic distance from
-// the base is scanned upwards for the first level where its count of contours (closed, at least
+// Splits a part into mono-branch sub-parts (thesis 000_dbb97c2716e10cc3.txt §3.4.3). The geodesic distance
+// from the base is scanned upwards for the first level where its count of contours (closed, at least
 // minPerimeter long) grows; the change is bisected down to the saddle value. The mesh is then cut
 // along two iso-lines of that distance (new vertices on the cut edges, shared by the faces on both
 // sides, so each piece is a manifold whose boundary runs along the cut); pieces that branch again

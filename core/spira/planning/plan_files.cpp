@@ -163,6 +163,11 @@ nlohmann::json planReportJson(const PlanOutput& plan, const std::string& strateg
   j["height_mean"] = s.heightMean;
   j["ramp_height_min"] = s.rampHeightMin;
   j["ramp_height_max"] = s.rampHeightMax;
+  j["h"] = s.h;
+  j["h_min"] = s.hMin;
+  j["h_max"] = s.hMax;
+  j["height_tolerance_mm"] = s.heightTolerance;
+  j["collapsed_revolutions"] = s.collapsedRevolutions;
   j["feasible"] = plan.feasible();
   j["window_feasible"] = s.feasible;
   j["deposit_check"] = depositCheckJson(plan.deposits);

@@ -7,7 +7,7 @@
 
 namespace spira {
 
-// The 2.5D reference the thesis compares CTPP with (§3.4.1, Fig. 3.41; spec §5.4 and V9): the
+// The 2.5D reference the thesis compares CTPP with (000_dbb97c2716e10cc3.txt §3.4.1.2, Fig. 3.41): the
 // part sliced by horizontal planes every h (plane-facet intersection, Choi & Kwok 2002), each
 // layer deposited on the one below. The deposit a point of a layer needs is its distance to the
 // previous layer: the shortest distance from the point to that layer's contours (to the lower

@@ -247,10 +247,10 @@ PlanOutput planPart(const PluginRegistry& registry, const PlanRequest& request, 
   clock.lap("topology");
   const double perimeter = branchPerimeter(out, settings);
   bool branches = out.topology.branched;
-  // Branches show in the geodesic distance from the base (thesis §3.4.3): a mono-branch part has
-  // one contour per level. A closed part plans with that field; an open part's harmonic field
-  // cannot show them (a capped arm holds it nearly constant, with no saddle), so the distance is
-  // computed for it too.
+  // Branches show in the geodesic distance from the base (000_dbb97c2716e10cc3.txt §3.4.3): a mono-branch
+  // part has one contour per level. A closed part plans with that field; an open part's harmonic field cannot
+  // show them (a capped arm holds it nearly constant, with no saddle), so the distance is computed for it
+  // too.
   std::vector<double> distance;
   if (!branches) {
     computeField(request, out, progress);

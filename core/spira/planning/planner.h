@@ -112,7 +112,7 @@ struct PlanOutput {
 // decomposition into generatrices, the continuous spiral with its start-up and deposit heights, and the
 // process channels. A multi-branch part (more than two free edges, or a field whose contours part into
 // several loops at least pi x bead width long) is split into mono-branch sub-parts (branch_split.h), each
-// planned on its own, trunk first (thesis §3.4.3).
+// planned on its own, trunk first (thesis 000_dbb97c2716e10cc3.txt §3.4.3).
 // Last, the deposit check judges the trajectory on its own (see deposit_check.h).
 // Throws InputError/AlgorithmError for parts or settings it cannot plan; an infeasible plan is a
 // result (feasible() == false), not an error.

@@ -10,7 +10,7 @@
 namespace spira {
 
 // A process actuator (wire feeder, power source input) as dead time plus first-order lag
-// (smoothing-adaptation-fgm.md B.4.2, seed 003 Eq. 3.12-3.13): the output y follows the command u as
+// (003_abf6ea7743219370.txt §3.2.3, Eq. 3.12-3.13): the output y follows the command u as
 //   tau * dy/dt + y = u(t - deadTime),
 // with tau = riseTimeConstant while y rises and fallTimeConstant while it falls. Identify the values
 // with a step-bead test (a WFS step, the bead height profile converted from distance to time).

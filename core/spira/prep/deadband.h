@@ -6,8 +6,8 @@
 namespace spira {
 
 // A process output (travel speed, wire feed, an analog value) written to the robot program only when
-// it has moved by more than `threshold` from the value last written (seed 003 "NC material
-// resolution", smoothing-adaptation-fgm.md B.4.1): programs are not flooded with I/O statements, and
+// it has moved by more than `threshold` from the value last written (the "NC material
+// resolution" of 003_abf6ea7743219370.txt §5.4, Fig. C.2): programs are not flooded with I/O statements, and
 // the value the process actually holds never differs from the planned one by more than `threshold`.
 struct DeadbandResult {
   std::vector<bool> emit;    // per point: write a new setpoint here (always at the first point)

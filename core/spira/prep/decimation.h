@@ -8,7 +8,7 @@
 
 namespace spira {
 
-// Greedy point skipping (smoothing-adaptation-fgm.md A.2.2): from the last kept sample i, reach as far
+// Greedy point skipping (002_4d923f9355c20a15.txt §I.3): from the last kept sample i, reach as far
 // as the tolerances allow - every skipped sample within `chordTolerance` of the straight segment and
 // within its channel and orientation tolerances of the interpolated values (SampleSet::fits) - but
 // no further than `maxSpacing` of path and never past a protected sample.

@@ -9,8 +9,8 @@
 namespace spira {
 
 // Settings of the path preparation run before a robot program is written: C2 quintic smoothing
-// (smoothing-adaptation-fgm.md A.2.1), resampling of the quintic at a chordal tolerance, then greedy
-// point skipping (A.2.2) under a chord tolerance and per-channel attribute tolerances, so that
+// (002_4d923f9355c20a15.txt §I.2.1.1), resampling of the quintic at a chordal tolerance, then greedy
+// point skipping (§I.3) under a chord tolerance and per-channel attribute tolerances, so that
 // deposit-height modulation survives the decimation (A.4.2). Internal units: mm, mm/s, rad.
 struct PrepParams {
   // --- smoothing (A.2.1) ---
@@ -24,7 +24,7 @@ struct PrepParams {
   // rule would otherwise round it and overshoot. Default 60 deg.
   double cornerAngle = degToRad(60.0);
 
-  // --- decimation (A.2.2, tubes-robots-chalvin.md 3.8) ---
+  // --- decimation (002_4d923f9355c20a15.txt §I.3; 004_bd0df31205c0c3c0.txt §3.2.1) ---
   // Greatest distance (mm) of a dropped sample from the robot's straight segment. Default 0.05 mm
   // (A.4.2 suggests 0.02-0.1 mm for WAAM).
   double chordTolerance = 0.05;

@@ -4,7 +4,7 @@
 
 namespace spira {
 
-// One interval of the sliding quintic (smoothing-adaptation-fgm.md A.2.1, Eq. I.8):
+// One interval of the sliding quintic (002_4d923f9355c20a15.txt §I.2.1.1, Eq. I.8):
 // X(u) = c0 + c1 u + ... + c5 u^5, u in [0, 1], for the three coordinates at once.
 struct Quintic3 {
   Vec3 c[6] = {Vec3::Zero(), Vec3::Zero(), Vec3::Zero(), Vec3::Zero(), Vec3::Zero(), Vec3::Zero()};

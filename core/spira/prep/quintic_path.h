@@ -7,7 +7,7 @@
 
 namespace spira {
 
-// The sliding quintic through every point of a trajectory (smoothing-adaptation-fgm.md A.2.1): on each
+// The sliding quintic through every point of a trajectory (002_4d923f9355c20a15.txt §I.2.1.1): on each
 // interval k (points k -> k+1) one quintic Hermite per quantity - the position and the three frame
 // vectors n, t, b - matching at both ends the first and second derivatives of the parabola through
 // the point and its neighbours (chord-length parameter). The curve passes through every point and is

@@ -13,7 +13,8 @@ struct SkeletonGraph {
   std::vector<std::array<int, 2>> edges;  // node indices, each undirected edge once
 };
 
-// The graph read as a topology check (thesis §2.0.1): its branches, branch points and loops.
+// The graph read as a topology check (000_dbb97c2716e10cc3.txt §3.3.1): its branches, branch points and
+// loops.
 struct CurveSkeleton {
   SkeletonGraph graph;
   // Maximal chains of edges between nodes of degree other than 2 (end points and branch points),
@@ -27,7 +28,7 @@ struct CurveSkeleton {
   size_t components = 0;           // connected pieces of the graph (1 for a connected part)
   // One open chain (one branch, no branch point, no loop) whose z never falls by more than the
   // tolerance given to analyseSkeleton on the way up: one skeleton point per height, as the
-  // envelope-projection strategy needs (thesis §2.0.1).
+  // envelope-projection strategy needs (000_dbb97c2716e10cc3.txt §3.3.2.1 step 2).
   bool monotoneInZ = false;
 
   size_t branchCount() const { return branches.size(); }

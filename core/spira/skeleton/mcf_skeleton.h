@@ -49,8 +49,8 @@ struct SkeletonResult {
 };
 
 // The mean curvature flow curve skeleton (Tagliasacchi et al. 2012, CGAL's implementation), the
-// thesis's topology check (§2.0.1). Open parts are capped first (see capped_surface.h): the flow
-// needs a closed surface. The skeleton is in the part's frame.
+// thesis's topology check (000_dbb97c2716e10cc3.txt §3.3.1). Open parts are capped first (see
+// capped_surface.h): the flow needs a closed surface. The skeleton is in the part's frame.
 //
 // Throws InputError, saying what is wrong and what to do, for an empty mesh, several components,
 // non-manifold or inconsistently oriented meshes and free edges that do not close into loops;

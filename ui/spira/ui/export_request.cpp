@@ -11,6 +11,7 @@
 
 #include "spira/base/error.h"
 #include "spira/pipeline/document_plan.h"
+#include "spira/pipeline/planned_path.h"
 #include "spira/pipeline/prep_schema.h"
 #include "spira/pipeline/program_header.h"
 #include "spira/robotcell/robot_cell.h"
@@ -53,9 +54,9 @@ ExportRequest makeExportRequest(const Results& results, const std::string& partN
 {
   ExportRequest r;
   // With the kinematics stage, its path: the plan with the torch tilts that cleared collisions.
-  r.trajectory = results.kinematics
-                     ? std::shared_ptr<const Trajectory>(results.kinematics, &results.kinematics->path)
-                     : results.process;
+  PlannedPath planned = plannedPathOf(results);
+  r.trajectory = std::move(planned.trajectory);
+  r.plannedCollision = std::move(planned.collision);
   if (cell) r.cell = *cell;
   const std::optional<PlanReportSummary> plan = planSummaryOf(results);
   r.header = programHeader(partName, cell ? cell->name : std::string(), plan ? *plan : PlanReportSummary(),
@@ -82,6 +83,8 @@ ExportOutcome run(const PluginRegistry& registry, const ExportRequest& request,
   job.prep = prepParamsFrom(request.prepParams);
   job.cell = cell ? &*cell : nullptr;
   job.header = request.header;
+  if (job.cell)
+    job.plannedCollision = request.plannedCollision;  // collisions need the cell they were found with
   return exportTrajectory(registry, *request.trajectory, job, outDir, progress);
 }
 

@@ -23,7 +23,8 @@ namespace spira::ui {
 // Everything a robot-program export needs, copied from the document on the GUI thread so that a
 // worker can run it without touching the document.
 struct ExportRequest {
-  std::shared_ptr<const Trajectory> trajectory;  // the process stage's path
+  std::shared_ptr<const Trajectory> trajectory;  // plannedPathOf(): the path the robot follows
+  std::vector<bool> plannedCollision;            // per point: the plan left it in collision
   std::optional<CellRecord> cell;                // none: targets are torch poses in the part frame
   std::string exporterId;
   ParamSet exporterParams;
