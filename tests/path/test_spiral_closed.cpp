@@ -21,6 +21,7 @@ SpiralSettings domeSettings()
   s.hMin = 0.9;
   s.hMax = 1.1;
   s.layerMode = LayerMode::Floor;  // the thesis's count, which uniformHelixLayers computes
+  s.minRevolutionLength = 0.0;     // h: only the last revolution (the pole itself) folds
   return s;
 }
 
