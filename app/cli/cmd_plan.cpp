@@ -12,7 +12,6 @@
 #include "spira/base/atomic_file.h"
 #include "spira/base/error.h"
 #include "spira/base/output_set.h"
-#include "spira/document/cell_file.h"
 #include "spira/document/project_file.h"
 #include "spira/io/isolated_import.h"
 #include "spira/pipeline/document_plan.h"
@@ -24,6 +23,7 @@
 #include "spira/planning/plan_schemas.h"
 #include "spira/planning/planner.h"
 #include "spira/plugin/strategy_name.h"
+#include "spira/robotcell/cell_file.h"
 
 namespace fs = std::filesystem;
 
