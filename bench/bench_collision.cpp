@@ -30,10 +30,10 @@
 #include "spira/base/units.h"
 #include "spira/collision/collision_resolver.h"
 #include "spira/collision/tilt_about_tangent.h"
-#include "spira/document/cell_file.h"
 #include "spira/io/import_service.h"
 #include "spira/pipeline/plan_motion.h"
 #include "spira/planning/planner.h"
+#include "spira/robotcell/cell_file.h"
 
 using namespace spira;
 

@@ -10,8 +10,8 @@
 
 #include "builtin_plugins.h"
 #include "spira/base/units.h"
-#include "spira/document/cell_file.h"
 #include "spira/pipeline/export_job.h"
+#include "spira/robotcell/cell_file.h"
 
 using namespace spira;
 namespace fs = std::filesystem;

@@ -31,11 +31,11 @@
 #include <vtkRenderer.h>
 
 #include "builtin_plugins.h"
-#include "spira/document/cell_file.h"
 #include "spira/document/document.h"
 #include "spira/io/mesh_writers.h"
 #include "spira/mesh/mesh_primitives.h"
 #include "spira/pipeline/document_plan.h"
+#include "spira/robotcell/cell_file.h"
 #include "spira/ui/application.h"
 #include "spira/ui/cell_panel.h"
 #include "spira/ui/interactive_quality.h"

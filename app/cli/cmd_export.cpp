@@ -10,7 +10,6 @@
 #include "spira/base/atomic_file.h"
 #include "spira/base/error.h"
 #include "spira/base/output_set.h"
-#include "spira/document/cell_file.h"
 #include "spira/document/document.h"
 #include "spira/document/plan_report.h"
 #include "spira/pipeline/plan_motion.h"
@@ -21,6 +20,7 @@
 #include "spira/planning/plan_files.h"
 #include "spira/planning/trajectory_csv_reader.h"
 #include "spira/plugin/param_cli.h"
+#include "spira/robotcell/cell_file.h"
 
 namespace spira::cli {
 namespace {

@@ -4,8 +4,8 @@
 #include "cli_common.h"
 #include "spira/base/error.h"
 #include "spira/base/units.h"
-#include "spira/document/cell_file.h"
 #include "spira/export/euler_angles.h"
+#include "spira/robotcell/cell_file.h"
 #include "spira/robotcell/robot_cell.h"
 
 namespace spira::cli {

@@ -12,7 +12,6 @@
 #include "spira/base/atomic_file.h"
 #include "spira/base/error.h"
 #include "spira/base/output_set.h"
-#include "spira/document/cell_file.h"
 #include "spira/document/project_file.h"
 #include "spira/io/isolated_import.h"
 #include "spira/pipeline/document_plan.h"
@@ -25,6 +24,7 @@
 #include "spira/planning/planner.h"
 #include "spira/planning/settings_sections.h"
 #include "spira/plugin/strategy_name.h"
+#include "spira/robotcell/cell_file.h"
 
 namespace fs = std::filesystem;
 

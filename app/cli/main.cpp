@@ -5,8 +5,7 @@
 #include <vector>
 
 #include "cli_common.h"
-#include "spira/base/error.h"
-#include "spira/base/progress.h"
+#include "spira/base/exit_code.h"
 #include "spira/base/version.h"
 #include "thread_limit.h"
 
@@ -73,26 +72,9 @@ int main(int argc, char** argv)
   } catch (const UsageError& e) {
     std::cerr << "spira-cli: " << e.what() << " (" << e.hint() << ")\n";
     return kExitUsage;
-  } catch (const spira::InfeasibleError& e) {
-    std::cerr << "spira-cli: " << e.fullMessage() << "\n";
-    return kExitInfeasible;
-  } catch (const spira::InputError& e) {
-    std::cerr << "spira-cli: " << e.fullMessage() << "\n";
-    return kExitBadInput;
-  } catch (const spira::IoError& e) {
-    std::cerr << "spira-cli: " << e.fullMessage() << "\n";
-    return kExitBadInput;
-  } catch (const spira::Error& e) {
-    std::cerr << "spira-cli: internal error: " << e.fullMessage() << " (please report this)\n";
-    return kExitInternal;
-  } catch (const spira::Cancelled&) {
-    std::cerr << "spira-cli: cancelled\n";
-    return kExitCancelled;
-  } catch (const std::bad_alloc&) {
-    std::cerr << "spira-cli: out of memory (try a coarser mesh or close other programs)\n";
-    return kExitInternal;
-  } catch (const std::exception& e) {
-    std::cerr << "spira-cli: internal error: " << e.what() << " (please report this)\n";
-    return kExitInternal;
+  } catch (...) {
+    const Failure failure = failureOf(std::current_exception());
+    std::cerr << "spira-cli: " << failure.message << "\n";
+    return failure.exitCode;
   }
 }

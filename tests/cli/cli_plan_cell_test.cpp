@@ -7,8 +7,8 @@
 
 #include "cli_runner.h"
 #include "spira/base/units.h"
-#include "spira/document/cell_file.h"
 #include "spira/planning/trajectory_csv_reader.h"
+#include "spira/robotcell/cell_file.h"
 #include "spira/robotcell/robot_cell.h"
 #include "support/test_support.h"
 

@@ -9,7 +9,6 @@
 #include "builtin_plugins.h"
 #include "cli_runner.h"
 #include "spira/base/progress.h"
-#include "spira/document/cell_file.h"
 #include "spira/document/document.h"
 #include "spira/document/project_file.h"
 #include "spira/io/import_service.h"
@@ -17,6 +16,7 @@
 #include "spira/pipeline/document_plan.h"
 #include "spira/planning/joints_csv.h"
 #include "spira/planning/plan_files.h"
+#include "spira/robotcell/cell_file.h"
 #include "support/test_support.h"
 
 namespace fs = std::filesystem;

@@ -6,10 +6,10 @@
 
 #include "cli_runner.h"
 #include "program_text.h"
-#include "spira/document/cell_file.h"
 #include "spira/document/document.h"
 #include "spira/mesh/mesh_primitives.h"
 #include "spira/planning/trajectory_csv_reader.h"
+#include "spira/robotcell/cell_file.h"
 #include "support/test_support.h"
 
 namespace fs = std::filesystem;

@@ -10,10 +10,10 @@
 #include "builtin_plugins.h"
 #include "cli_runner.h"
 #include "spira/base/progress.h"
-#include "spira/document/cell_file.h"
 #include "spira/document/document.h"
 #include "spira/document/project_file.h"
 #include "spira/io/import_service.h"
+#include "spira/robotcell/cell_file.h"
 #include "support/test_support.h"
 
 namespace fs = std::filesystem;

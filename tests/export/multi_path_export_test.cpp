@@ -12,9 +12,9 @@
 #include "export_test_data.h"
 #include "krl_reader.h"
 #include "spira/base/progress.h"
-#include "spira/document/cell_file.h"
 #include "spira/pipeline/export_job.h"
 #include "spira/plugin/plugin_registry.h"
+#include "spira/robotcell/cell_file.h"
 #include "support/test_support.h"
 #include "tp_reader.h"
 

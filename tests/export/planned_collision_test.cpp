@@ -9,9 +9,9 @@
 #include "krl_reader.h"
 #include "spira/base/error.h"
 #include "spira/base/progress.h"
-#include "spira/document/cell_file.h"
 #include "spira/pipeline/export_job.h"
 #include "spira/plugin/plugin_registry.h"
+#include "spira/robotcell/cell_file.h"
 #include "support/test_support.h"
 
 namespace spira {

@@ -5,10 +5,10 @@
 #include "export_test_data.h"
 #include "spira/base/error.h"
 #include "spira/base/progress.h"
-#include "spira/document/cell_file.h"
 #include "spira/pipeline/plan_motion.h"
 #include "spira/pipeline/prep_schema.h"
 #include "spira/pipeline/sub_paths.h"
+#include "spira/robotcell/cell_file.h"
 #include "support/test_support.h"
 
 namespace spira {

@@ -21,9 +21,9 @@
 #include "builtin_plugins.h"
 
 #include "spira/base/atomic_file.h"
-#include "spira/document/cell_file.h"
 #include "spira/document/document.h"
 #include "spira/document/kinematics_result.h"
+#include "spira/robotcell/cell_file.h"
 #include "spira/ui/cell_panel.h"
 #include "spira/ui/cell_workspace.h"
 #include "spira/ui/log_panel.h"

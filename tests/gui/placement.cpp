@@ -16,12 +16,12 @@
 #include <vtkPolyDataMapper.h>
 #include "builtin_plugins.h"
 
-#include "spira/document/cell_file.h"
 #include "spira/document/document.h"
 #include "spira/document/kinematics_result.h"
 #include "spira/io/mesh_writers.h"
 #include "spira/mesh/mesh_primitives.h"
 #include "spira/mesh/mesh_report.h"
+#include "spira/robotcell/cell_file.h"
 #include "spira/ui/cell_workspace.h"
 #include "spira/ui/comfort_features.h"
 #include "spira/ui/main_window.h"

@@ -29,9 +29,9 @@
 #include "builtin_plugins.h"
 
 #include "spira/base/units.h"
-#include "spira/document/cell_file.h"
 #include "spira/document/document.h"
 #include "spira/document/kinematics_result.h"
+#include "spira/robotcell/cell_file.h"
 #include "spira/robotcell/robot_cell.h"
 #include "spira/ui/display_panel.h"
 #include "spira/ui/export_dialog.h"

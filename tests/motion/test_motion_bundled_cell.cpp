@@ -15,8 +15,8 @@
 
 #include "motion_fixtures.h"
 #include "spira/base/progress.h"
-#include "spira/document/cell_file.h"
 #include "spira/motion/motion_solver.h"
+#include "spira/robotcell/cell_file.h"
 #include "spira/robotcell/robot_cell.h"
 #include "support/test_support.h"
 

@@ -16,12 +16,12 @@
 #include "builtin_plugins.h"
 #include "spira/base/progress.h"
 #include "spira/base/units.h"
-#include "spira/document/cell_file.h"
 #include "spira/mesh/mesh_report.h"
 #include "spira/pipeline/plan_motion.h"
 #include "spira/pipeline/sub_paths.h"
 #include "spira/planning/planner.h"
 #include "spira/plugin/plugin_registry.h"
+#include "spira/robotcell/cell_file.h"
 #include "spira/robotcell/robot_cell.h"
 #include "support/test_support.h"
 

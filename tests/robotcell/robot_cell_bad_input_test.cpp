@@ -10,8 +10,8 @@
 
 #include "spira/base/error.h"
 #include "spira/base/units.h"
-#include "spira/document/cell_file.h"
 #include "spira/mesh/mesh_primitives.h"
+#include "spira/robotcell/cell_file.h"
 #include "spira/robotcell/robot_cell.h"
 #include "spira/robotcell/robot_collision_model.h"
 #include "support/test_support.h"

@@ -6,9 +6,9 @@
 #include "spira/base/progress.h"
 #include "spira/base/transform.h"
 #include "spira/base/units.h"
-#include "spira/document/cell_file.h"
 #include "spira/kinematics/joint_path_solver.h"
 #include "spira/path/tool_frame.h"
+#include "spira/robotcell/cell_file.h"
 #include "spira/robotcell/robot_cell.h"
 #include "support/test_support.h"
 

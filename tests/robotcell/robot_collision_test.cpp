@@ -4,8 +4,8 @@
 #include <filesystem>
 
 #include "spira/base/units.h"
-#include "spira/document/cell_file.h"
 #include "spira/mesh/mesh_primitives.h"
+#include "spira/robotcell/cell_file.h"
 #include "spira/robotcell/link_shapes.h"
 #include "spira/robotcell/robot_collision_model.h"
 #include "support/test_support.h"

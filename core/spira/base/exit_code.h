@@ -1,5 +1,8 @@
 #pragma once
 
+#include <exception>
+#include <string>
+
 namespace spira {
 
 // The exit codes of spira-cli and spira (documented in README.md). 1 is for bugs only: whatever the
@@ -12,5 +15,15 @@ enum ExitCode : int {
   kExitInfeasible = 4,   // planned, but the plan is not feasible
   kExitCancelled = 130,  // interrupted (SIGINT)
 };
+
+// What a command that threw `error` exits with, and the one line that says why: Spira's error kinds
+// map to the codes above here and nowhere else. A part Spira cannot plan (AlgorithmError) and
+// running out of memory are for the user to change, not bugs; only a broken invariant
+// (InternalError) or a foreign exception is reported as a bug.
+struct Failure {
+  int exitCode = kExitInternal;
+  std::string message;
+};
+Failure failureOf(std::exception_ptr error);
 
 }  // namespace spira

@@ -2,11 +2,11 @@
 
 #include <memory>
 
-#include "spira/document/cell_record.h"
 #include "spira/document/part.h"
 #include "spira/document/plan_settings.h"
 #include "spira/document/results.h"
 #include "spira/document/substrate.h"
+#include "spira/robotcell/cell_record.h"
 
 namespace spira {
 

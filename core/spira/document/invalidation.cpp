@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "spira/document/json_codec.h"
+#include "spira/io/json_codec.h"
 
 namespace spira {
 

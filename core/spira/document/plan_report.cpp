@@ -3,8 +3,8 @@
 #include <algorithm>
 
 #include "spira/base/error.h"
-#include "spira/document/json_read.h"
 #include "spira/document/results.h"
+#include "spira/io/json_read.h"
 
 namespace spira {
 namespace {

@@ -3,7 +3,7 @@
 #include <nlohmann/json.hpp>
 
 #include "spira/base/error.h"
-#include "spira/document/json_codec.h"
+#include "spira/io/json_codec.h"
 
 namespace spira {
 

@@ -7,9 +7,9 @@
 #include "spira/base/atomic_file.h"
 #include "spira/base/error.h"
 #include "spira/base/version.h"
-#include "spira/document/cell_file.h"
-#include "spira/document/json_codec.h"
-#include "spira/document/json_read.h"
+#include "spira/io/json_codec.h"
+#include "spira/io/json_read.h"
+#include "spira/robotcell/cell_file.h"
 
 namespace spira {
 

@@ -3,8 +3,8 @@
 #include <nlohmann/json.hpp>
 
 #include "spira/base/error.h"
-#include "spira/document/json_codec.h"
 #include "spira/document/results.h"
+#include "spira/io/json_codec.h"
 
 namespace spira {
 

@@ -2,7 +2,7 @@
 
 #include "spira/base/error.h"
 #include "spira/document/document_state.h"
-#include "spira/document/json_codec.h"
+#include "spira/io/json_codec.h"
 
 namespace spira {
 

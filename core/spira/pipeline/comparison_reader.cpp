@@ -12,7 +12,7 @@
 #include "spira/base/atomic_file.h"
 #include "spira/base/error.h"
 #include "spira/base/number_text.h"
-#include "spira/document/json_read.h"
+#include "spira/io/json_read.h"
 
 namespace spira {
 

@@ -4,11 +4,11 @@
 #include <optional>
 #include <string>
 
-#include "spira/document/cell_record.h"
 #include "spira/kinematics/arm_ik.h"
 #include "spira/kinematics/controller_convention.h"
 #include "spira/kinematics/joint_path_solver.h"
 #include "spira/kinematics/tilt_rotate_positioner.h"
+#include "spira/robotcell/cell_record.h"
 
 namespace spira {
 

@@ -16,7 +16,7 @@
 
 #include "spira/base/error.h"
 #include "spira/base/units.h"
-#include "spira/document/cell_file.h"
+#include "spira/robotcell/cell_file.h"
 #include "spira/ui/log_panel.h"
 
 namespace spira::ui {

@@ -7,11 +7,11 @@
 #include <string>
 #include <vector>
 
-#include "spira/document/cell_record.h"
 #include "spira/document/kinematics_result.h"
 #include "spira/document/results.h"
 #include "spira/pipeline/export_job.h"
 #include "spira/plugin/parameter.h"
+#include "spira/robotcell/cell_record.h"
 
 namespace spira {
 class PluginRegistry;

@@ -9,7 +9,7 @@
 #include <vtkSmartPointer.h>
 
 #include "spira/base/transform.h"
-#include "spira/document/cell_record.h"
+#include "spira/robotcell/cell_record.h"
 
 class vtkActor;
 class vtkRenderer;

@@ -1,4 +1,4 @@
-#include "spira/document/cell_file.h"
+#include "spira/robotcell/cell_file.h"
 
 #include <cmath>
 #include <nlohmann/json.hpp>
@@ -7,7 +7,7 @@
 #include "spira/base/error.h"
 #include "spira/base/number_text.h"
 #include "spira/base/units.h"
-#include "spira/document/json_read.h"
+#include "spira/io/json_read.h"
 
 namespace spira {
 

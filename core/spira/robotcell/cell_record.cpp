@@ -1,9 +1,9 @@
-#include "spira/document/cell_record.h"
+#include "spira/robotcell/cell_record.h"
 
 #include <limits>
 
 #include "spira/base/error.h"
-#include "spira/document/json_codec.h"
+#include "spira/io/json_codec.h"
 
 namespace spira {
 

@@ -1,9 +1,9 @@
-#include "spira/document/json_codec.h"
+#include "spira/io/json_codec.h"
 
 #include <cstring>
 
 #include "spira/base/error.h"
-#include "spira/document/json_read.h"
+#include "spira/io/json_read.h"
 
 namespace spira::codec {
 

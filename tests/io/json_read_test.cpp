@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "spira/base/error.h"
-#include "spira/document/json_read.h"
+#include "spira/io/json_read.h"
 
 namespace spira::test {
 namespace {

@@ -3,7 +3,7 @@
 #include <filesystem>
 #include <string>
 
-#include "spira/document/cell_record.h"
+#include "spira/robotcell/cell_record.h"
 
 namespace spira {
 

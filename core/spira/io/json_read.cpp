@@ -1,4 +1,4 @@
-#include "spira/document/json_read.h"
+#include "spira/io/json_read.h"
 
 #include <cmath>
 

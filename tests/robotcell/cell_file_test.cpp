@@ -5,7 +5,7 @@
 
 #include "spira/base/error.h"
 #include "spira/base/units.h"
-#include "spira/document/cell_file.h"
+#include "spira/robotcell/cell_file.h"
 #include "support/test_support.h"
 
 namespace spira {
