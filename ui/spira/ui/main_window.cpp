@@ -143,7 +143,7 @@ MainWindow::MainWindow(Document& doc, const PluginRegistry& registry, MainWindow
   inspector_ = new PathInspector(selection_, view_, chart_, log_, statusBar(), this);
   // Made once the window's own docks are laid out, so the cell's docks take their room from the
   // plan's column and not from the 3D view.
-  cellWorkspace_ = new CellWorkspace(*this, doc_, *view_, *log_);
+  cellWorkspace_ = new CellWorkspace(*this, *planPanel_, doc_, *view_, *log_);
   QAction* cellToggle = cellWorkspace_->cellDock()->toggleViewAction();
   cellToggle->setText(tr("C&ell"));
   cellToggle->setToolTip(tr("The robot cell: robot, torch, positioner and where the part sits"));
@@ -162,7 +162,22 @@ MainWindow::MainWindow(Document& doc, const PluginRegistry& registry, MainWindow
 
   connectActions();
   // Placement dock, presets, themes, help, autosave: before the layout is restored, which includes its dock.
-  new ComfortFeatures(*this, options_.persistLayout, options_.interactive);
+  const WindowParts parts{*this,
+                          doc_,
+                          actions_,
+                          *view_,
+                          *treeDock_,
+                          *display_,
+                          *planPanel_,
+                          *log_,
+                          *tasks_,
+                          *cellWorkspace_->simulationPanel(),
+                          [this](const QString& path) { openFile(path); },
+                          [this] { plan(); },
+                          [this] { return busy(); }};
+  comfort_ = new ComfortFeatures(parts, options_.persistLayout, options_.interactive);
+  connect(this, &MainWindow::fileOpened, comfort_, &ComfortFeatures::fileOpened);
+  connect(this, &MainWindow::planFinished, comfort_, &ComfortFeatures::planFinished);
   if (options_.persistLayout) {
     QSettings settings;
     restoreGeometry(settings.value(kGeometryKey).toByteArray());
@@ -385,7 +400,7 @@ void MainWindow::showAbout()
 QImage MainWindow::captureImage()
 {
   // A picture is still: drawn at full quality even while a job keeps the view fast.
-  auto* quality = view_->findChild<InteractiveQuality*>();
+  InteractiveQuality* quality = comfort_->interactiveQuality();
   if (quality) quality->fullQualityNow();
   view_->render();
   QApplication::processEvents();
