@@ -122,6 +122,14 @@ class MainWindow : public QMainWindow {
   void dropEvent(QDropEvent* event) override;
 
  private:
+  // Construction stages (the constructor makes the view and the docks, then calls these in order).
+  void addChartDock();
+  void addJointDock();
+  void createActionsAndTasks();
+  void createStatusBar();
+  void createCellWorkspace();
+  void installComfortFeatures();
+  void restoreLayout();
   void connectActions();
   void onDocumentChanged(const ChangeSet& changes);
   void refreshScene(bool partChanged);
