@@ -44,7 +44,7 @@
 #include "spira/ui/scene_view.h"
 #include "spira/ui/spiral_layer.h"
 #include "spira/ui/task_runner.h"
-#include "spira/ui/ui_watchdog.h"
+#include "support/ui_watchdog.h"
 
 namespace {
 

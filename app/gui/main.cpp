@@ -176,7 +176,7 @@ int main(int argc, char** argv)
   spira::ui::MainWindow window(doc, spira::builtinRegistry());
   window.show();
   if (cmd.recover) {
-    if (auto* comfort = window.findChild<spira::ui::ComfortFeatures*>()) comfort->offerRecovery(true);
+    window.comfortFeatures()->offerRecovery(true);
   }
   if (!cmd.file.empty()) {
     const QString file = QString::fromLocal8Bit(cmd.file.c_str());

@@ -45,9 +45,9 @@
 #include "spira/ui/scene_view.h"
 #include "spira/ui/task_runner.h"
 #include "spira/ui/theme.h"
-#include "spira/ui/ui_watchdog.h"
 #include "support/gui_test_support.h"
 #include "support/test_support.h"
+#include "support/ui_watchdog.h"
 
 namespace spira::test {
 namespace {

@@ -31,12 +31,8 @@ QAction* makeToggle(QMainWindow* w, const QString& text, const QString& tip, boo
   return a;
 }
 
-}  // namespace
-
-Actions Actions::create(QMainWindow* w, const QList<QAction*>& panelToggles)
+void makeFileActions(Actions& a, QMainWindow* w, QStyle* st)
 {
-  QStyle* st = w->style();
-  Actions a;
   a.importPart = make(w, QObject::tr("&Import Part..."), QObject::tr("Import a part mesh (STL, ...)"),
                       {QKeySequence(Qt::CTRL | Qt::Key_I)});
   a.importPart->setIcon(QIcon(QStringLiteral(":/spira/icons/import-part.svg")));
@@ -54,7 +50,10 @@ Actions Actions::create(QMainWindow* w, const QList<QAction*>& panelToggles)
   a.exportProgram->setObjectName(QStringLiteral("exportProgramAction"));
   a.quit = make(w, QObject::tr("&Quit"), QObject::tr("Quit Spira"), {QKeySequence(Qt::CTRL | Qt::Key_Q)});
   a.quit->setMenuRole(QAction::QuitRole);
+}
 
+void makeEditAndViewActions(Actions& a, QMainWindow* w, QStyle* st)
+{
   a.undo = make(w, QObject::tr("&Undo"), QObject::tr("Undo the last change"),
                 {QKeySequence(Qt::CTRL | Qt::Key_Z)});
   a.undo->setIcon(st->standardIcon(QStyle::SP_ArrowBack));
@@ -77,6 +76,10 @@ Actions Actions::create(QMainWindow* w, const QList<QAction*>& panelToggles)
   a.viewSide = make(w, QObject::tr("&Side View"), QObject::tr("Look along -X"), {QKeySequence(Qt::Key_3)});
   a.fitView =
       make(w, QObject::tr("&Fit to View"), QObject::tr("Frame the whole part"), {QKeySequence(Qt::Key_F)});
+}
+
+void makePlanAndHelpActions(Actions& a, QMainWindow* w, QStyle* st)
+{
   a.plan =
       make(w, QObject::tr("&Plan"), QObject::tr("Plan the spiral on the part with the current settings (F5)"),
            {QKeySequence(Qt::Key_F5)});
@@ -95,7 +98,10 @@ Actions Actions::create(QMainWindow* w, const QList<QAction*>& panelToggles)
   a.about->setMenuRole(QAction::AboutRole);
   a.aboutQt = make(w, QObject::tr("About &Qt"), QObject::tr("Qt version and licence"));
   a.aboutQt->setMenuRole(QAction::AboutQtRole);
+}
 
+void buildMenus(Actions& a, QMainWindow* w, const QList<QAction*>& panelToggles)
+{
   QMenuBar* bar = w->menuBar();
   QMenu* file = bar->addMenu(QObject::tr("&File"));
   file->addAction(a.importPart);
@@ -137,7 +143,10 @@ Actions Actions::create(QMainWindow* w, const QList<QAction*>& panelToggles)
   QMenu* help = bar->addMenu(QObject::tr("&Help"));
   help->addAction(a.about);
   help->addAction(a.aboutQt);
+}
 
+void buildToolBars(const Actions& a, QMainWindow* w)
+{
   QToolBar* tools = w->addToolBar(QObject::tr("Main"));
   tools->setObjectName("mainToolBar");
   tools->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
@@ -167,6 +176,19 @@ Actions Actions::create(QMainWindow* w, const QList<QAction*>& panelToggles)
     for (QAction* action : toolBar->actions())
       if (QWidget* button = toolBar->widgetForAction(action); button && !action->isSeparator())
         button->setFixedSize(button->sizeHint());
+}
+
+}  // namespace
+
+Actions Actions::create(QMainWindow* w, const QList<QAction*>& panelToggles)
+{
+  QStyle* st = w->style();
+  Actions a;
+  makeFileActions(a, w, st);
+  makeEditAndViewActions(a, w, st);
+  makePlanAndHelpActions(a, w, st);
+  buildMenus(a, w, panelToggles);
+  buildToolBars(a, w);
   return a;
 }
 

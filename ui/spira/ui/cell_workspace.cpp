@@ -20,7 +20,8 @@
 
 namespace spira::ui {
 
-CellWorkspace::CellWorkspace(QMainWindow& window, Document& doc, SceneView& view, LogPanel& log)
+CellWorkspace::CellWorkspace(QMainWindow& window, QDockWidget& planDock, Document& doc, SceneView& view,
+                             LogPanel& log)
     : QObject(&window), doc_(doc), view_(view), log_(log)
 {
   robot_ = std::make_unique<RobotLayer>(view.renderer());
@@ -36,9 +37,6 @@ CellWorkspace::CellWorkspace(QMainWindow& window, Document& doc, SceneView& view
   cellDock_->setWidget(scroll);
   // With the plan settings (a tab beside them) and the simulation's controls below them: the
   // window keeps its size and the 3D view its width.
-  QDockWidget* planDock = nullptr;
-  for (QDockWidget* d : window.findChildren<QDockWidget*>())
-    if (!planDock && window.dockWidgetArea(d) == Qt::RightDockWidgetArea) planDock = d;
   window.addDockWidget(Qt::RightDockWidgetArea, cellDock_);
   simulation_ = new SimulationPanel(
       *robot_, *bead_, [this] { redraw(); }, &window);
@@ -46,11 +44,9 @@ CellWorkspace::CellWorkspace(QMainWindow& window, Document& doc, SceneView& view
   simulationDock_->setObjectName(QStringLiteral("simulationDock"));
   simulationDock_->setWidget(simulation_);
   window.addDockWidget(Qt::RightDockWidgetArea, simulationDock_);
-  if (planDock) {
-    // Split first: a dock split off a tabbed one would join its tabs.
-    window.splitDockWidget(planDock, simulationDock_, Qt::Vertical);
-    window.tabifyDockWidget(planDock, cellDock_);
-  }
+  // Split first: a dock split off a tabbed one would join its tabs.
+  window.splitDockWidget(&planDock, simulationDock_, Qt::Vertical);
+  window.tabifyDockWidget(&planDock, cellDock_);
   cellDock_->hide();
   simulationDock_->hide();
   subscription_ = doc_.subscribe([this](const ChangeSet& c) { onChanged(c); });

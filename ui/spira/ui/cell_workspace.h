@@ -26,7 +26,8 @@ class CellWorkspace : public QObject {
   Q_OBJECT
 
  public:
-  CellWorkspace(QMainWindow& window, Document& doc, SceneView& view, LogPanel& log);
+  // `planDock`: the window's plan settings, which the Cell dock joins as a tab.
+  CellWorkspace(QMainWindow& window, QDockWidget& planDock, Document& doc, SceneView& view, LogPanel& log);
   ~CellWorkspace() override;
 
   CellPanel* cellPanel() const { return cellPanel_; }

@@ -9,6 +9,7 @@
 #include <QDockWidget>
 #include <QFileInfo>
 #include <QLocale>
+#include <QMainWindow>
 #include <QMenu>
 #include <QMessageBox>
 #include <QPushButton>
@@ -16,14 +17,13 @@
 #include <QTimer>
 
 #include "spira/base/error.h"
+#include "spira/ui/actions.h"
 #include "spira/ui/autosave.h"
-#include "spira/ui/cell_workspace.h"
 #include "spira/ui/display_panel.h"
 #include "spira/ui/guided_tour.h"
 #include "spira/ui/help_dialogs.h"
 #include "spira/ui/interactive_quality.h"
 #include "spira/ui/log_panel.h"
-#include "spira/ui/main_window.h"
 #include "spira/ui/placement_panel.h"
 #include "spira/ui/plan_panel.h"
 #include "spira/ui/preset_bar.h"
@@ -46,41 +46,39 @@ QMenu* menuOf(QAction* action)
 
 }  // namespace
 
-ComfortFeatures::ComfortFeatures(MainWindow& window, bool userSession, bool interactive)
-    : QObject(&window), window_(window), interactive_(interactive)
+ComfortFeatures::ComfortFeatures(const WindowParts& parts, bool userSession, bool interactive)
+    : QObject(&parts.window), parts_(parts), interactive_(interactive)
 {
   setObjectName(QStringLiteral("comfortFeatures"));
-  Document& doc = window.document();
-  const Actions& actions = window.actions();
+  QMainWindow& window = parts.window;
+  Document& doc = parts.doc;
+  const Actions& actions = parts.actions;
 
-  auto* quality = new InteractiveQuality(window.sceneView());
+  quality_ = new InteractiveQuality(&parts.view);
+  InteractiveQuality* quality = quality_;
   // A new colouring or build range shows at once in a fast frame, then at full quality.
-  connect(window.displayPanel()->channelCombo(), QOverload<int>::of(&QComboBox::currentIndexChanged), quality,
+  connect(parts.display.channelCombo(), QOverload<int>::of(&QComboBox::currentIndexChanged), quality,
           &InteractiveQuality::fastFrame);
-  connect(window.displayPanel()->revolutionSlider(), &QSlider::valueChanged, quality,
-          &InteractiveQuality::fastFrame);
-  connect(window.taskRunner(), &TaskRunner::started, quality, &InteractiveQuality::hold);
-  connect(window.taskRunner(), &TaskRunner::finished, quality, &InteractiveQuality::release);
-  connect(window.cellWorkspace()->simulationPanel(), &SimulationPanel::playingChanged, quality,
+  connect(parts.display.revolutionSlider(), &QSlider::valueChanged, quality, &InteractiveQuality::fastFrame);
+  connect(&parts.tasks, &TaskRunner::started, quality, &InteractiveQuality::hold);
+  connect(&parts.tasks, &TaskRunner::finished, quality, &InteractiveQuality::release);
+  connect(&parts.simulation, &SimulationPanel::playingChanged, quality,
           [quality](bool playing) { playing ? quality->hold() : quality->release(); });
   placement_ = new PlacementPanel(doc, &window);
   window.addDockWidget(Qt::LeftDockWidgetArea, placement_);
-  window.tabifyDockWidget(window.displayPanel(), placement_);
+  window.tabifyDockWidget(&parts.display, placement_);
   connect(placement_, &PlacementPanel::failed, this,
-          [this](const QString& message, const QString& hint) { window_.logPanel()->error(message, hint); });
-  if (auto* tree = window.findChild<QDockWidget*>(QStringLiteral("documentDock"))) {
-    tree->raise();
-    // A dock added to the column resets its width: give back the width the window chose.
-    window.resizeDocks({tree}, {320}, Qt::Horizontal);
-  }
+          [this](const QString& message, const QString& hint) { parts_.log.error(message, hint); });
+  parts.treeDock.raise();
+  // A dock added to the column resets its width: give back the width the window chose.
+  window.resizeDocks({&parts.treeDock}, {320}, Qt::Horizontal);
 
-  presets_ = new PresetBar(doc, PresetStore(), window.planPanel());
-  if (auto* box = qobject_cast<QBoxLayout*>(window.planPanel()->widget()->layout()))
-    box->insertWidget(0, presets_);
+  presets_ = new PresetBar(doc, PresetStore(), &parts.plan);
+  if (auto* box = qobject_cast<QBoxLayout*>(parts.plan.widget()->layout())) box->insertWidget(0, presets_);
   connect(presets_, &PresetBar::failed, this, [this](const QString& message, const QString& hint) {
-    window_.logPanel()->error(message, hint);
+    parts_.log.error(message, hint);
     if (!interactive_) return;
-    QMessageBox box(QMessageBox::Warning, tr("Preset"), message, QMessageBox::Ok, &window_);
+    QMessageBox box(QMessageBox::Warning, tr("Preset"), message, QMessageBox::Ok, &parts_.window);
     box.setInformativeText(hint);
     box.exec();
   });
@@ -95,7 +93,8 @@ ComfortFeatures::ComfortFeatures(MainWindow& window, bool userSession, bool inte
     themes_ = addThemeMenu(view, this, [this] { themeChanged(); });
     // The group hears of a choice before the theme is applied: a new style relayouts the window
     // and shrinks the docks to their minimum, so the layout is put back afterwards.
-    connect(themes_, &QActionGroup::triggered, this, [this] { layoutBeforeTheme_ = window_.saveState(); });
+    connect(themes_, &QActionGroup::triggered, this,
+            [this] { layoutBeforeTheme_ = parts_.window.saveState(); });
   }
 
   shortcuts_ = new QAction(tr("&Keyboard Shortcuts"), &window);
@@ -103,7 +102,7 @@ ComfortFeatures::ComfortFeatures(MainWindow& window, bool userSession, bool inte
   shortcuts_->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_F1));
   shortcuts_->setShortcutContext(Qt::WindowShortcut);
   shortcuts_->setStatusTip(tr("List every keyboard shortcut"));
-  connect(shortcuts_, &QAction::triggered, this, [this] { showShortcutsDialog(&window_); });
+  connect(shortcuts_, &QAction::triggered, this, [this] { showShortcutsDialog(&parts_.window); });
   tour_ = new QAction(tr("&Guided Sample..."), &window);
   tour_->setObjectName(QStringLiteral("guidedTourAction"));
   tour_->setShortcut(QKeySequence::HelpContents);
@@ -127,8 +126,8 @@ ComfortFeatures::ComfortFeatures(MainWindow& window, bool userSession, bool inte
     themeChanged();
     autosave_ = new Autosave(doc, {}, this);
     connect(autosave_, &Autosave::saveFailed, this, [this](const QString& message) {
-      window_.logPanel()->warning(tr("Autosave failed: %1").arg(message),
-                                  tr("Save the project yourself (Ctrl+S) to keep your work."));
+      parts_.log.warning(tr("Autosave failed: %1").arg(message),
+                         tr("Save the project yourself (Ctrl+S) to keep your work."));
     });
     // Reached only when the application quits normally: a crash leaves the recovery file.
     connect(qApp, &QCoreApplication::aboutToQuit, autosave_, &Autosave::finishCleanly);
@@ -140,7 +139,7 @@ ComfortFeatures::~ComfortFeatures() = default;
 
 GuidedTour* ComfortFeatures::guidedTour()
 {
-  if (!guide_) guide_ = new GuidedTour(window_);
+  if (!guide_) guide_ = new GuidedTour(parts_);
   return guide_;
 }
 
@@ -155,7 +154,7 @@ void ComfortFeatures::offerRecovery(bool restoreWithoutAsking)
     QMessageBox box(QMessageBox::Question, tr("Recover Work"),
                     tr("Spira did not close normally last time. Work on %1 was autosaved at %2.")
                         .arg(what, QLocale().toString(when, QLocale::ShortFormat)),
-                    QMessageBox::NoButton, &window_);
+                    QMessageBox::NoButton, &parts_.window);
     box.setInformativeText(tr("Restore it? If you discard it, it is deleted."));
     QPushButton* restore = box.addButton(tr("Restore"), QMessageBox::AcceptRole);
     box.addButton(tr("Discard"), QMessageBox::DestructiveRole);
@@ -168,11 +167,10 @@ void ComfortFeatures::offerRecovery(bool restoreWithoutAsking)
   }
   try {
     autosave_->restore();
-    window_.logPanel()->info(tr("Recovered the autosaved work on %1; save it to keep it.").arg(what));
+    parts_.log.info(tr("Recovered the autosaved work on %1; save it to keep it.").arg(what));
   } catch (const Error& e) {
-    window_.logPanel()->error(
-        tr("The autosaved work could not be recovered: %1").arg(QString::fromUtf8(e.what())),
-        QString::fromStdString(e.hint()));
+    parts_.log.error(tr("The autosaved work could not be recovered: %1").arg(QString::fromUtf8(e.what())),
+                     QString::fromStdString(e.hint()));
   }
 }
 
@@ -181,12 +179,22 @@ void ComfortFeatures::themeChanged()
   if (!layoutBeforeTheme_.isEmpty()) {
     // After the style change's own relayout, which is posted.
     QTimer::singleShot(0, this, [this] {
-      window_.restoreState(layoutBeforeTheme_);
+      parts_.window.restoreState(layoutBeforeTheme_);
       layoutBeforeTheme_.clear();
     });
   }
-  applySceneBackground(window_.sceneView()->renderer());
-  window_.sceneView()->scheduleRender();
+  applySceneBackground(parts_.view.renderer());
+  parts_.view.scheduleRender();
+}
+
+void ComfortFeatures::fileOpened(const QString& path, bool ok)
+{
+  if (guide_) guide_->onFileOpened(path, ok);
+}
+
+void ComfortFeatures::planFinished(const TaskOutcome& outcome)
+{
+  if (guide_) guide_->onPlanFinished(outcome);
 }
 
 }  // namespace spira::ui

@@ -32,6 +32,17 @@ DisplayPanel::DisplayPanel(SceneView* view, ProcessChart* chart, QAction* chartT
   auto* layout = new QVBoxLayout(body);
   layout->setContentsMargins(6, 6, 6, 6);
 
+  layout->addLayout(buildPartRow(body));
+  layout->addWidget(buildFieldBox(body));
+  layout->addWidget(buildPathsBox(body));
+  layout->addWidget(buildSpiralBox(body));
+  finishLayout(body, layout, chartToggle);
+  connectControls();
+  resultsChanged();
+}
+
+QFormLayout* DisplayPanel::buildPartRow(QWidget* body)
+{
   auto* partForm = new QFormLayout;
   partStyle_ = new QComboBox(body);
   partStyle_->setObjectName(QStringLiteral("partStyleCombo"));
@@ -43,8 +54,11 @@ DisplayPanel::DisplayPanel(SceneView* view, ProcessChart* chart, QAction* chartT
   partStyle_->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
   partStyle_->setMinimumContentsLength(12);
   partForm->addRow(tr("Part"), partStyle_);
-  layout->addLayout(partForm);
+  return partForm;
+}
 
+QGroupBox* DisplayPanel::buildFieldBox(QWidget* body)
+{
   fieldBox_ = new QGroupBox(tr("Scalar field"), body);
   auto* fieldForm = new QFormLayout(fieldBox_);
   auto* range = new QHBoxLayout;
@@ -71,8 +85,12 @@ DisplayPanel::DisplayPanel(SceneView* view, ProcessChart* chart, QAction* chartT
   isoLines_->setSpecialValueText(tr("none"));
   isoLines_->setToolTip(tr("About how many iso-lines to draw, at a round spacing"));
   fieldForm->addRow(tr("Iso-lines"), isoLines_);
-  layout->addWidget(fieldBox_);
 
+  return fieldBox_;
+}
+
+QGroupBox* DisplayPanel::buildPathsBox(QWidget* body)
+{
   auto* pathsBox = new QGroupBox(tr("Decomposition"), body);
   auto* pathsLayout = new QVBoxLayout(pathsBox);
   generatrices_ = new QCheckBox(tr("Generatrices"), pathsBox);
@@ -82,8 +100,11 @@ DisplayPanel::DisplayPanel(SceneView* view, ProcessChart* chart, QAction* chartT
   closure_->setToolTip(tr("Closed parts: where the spiral ends"));
   pathsLayout->addWidget(generatrices_);
   pathsLayout->addWidget(closure_);
-  layout->addWidget(pathsBox);
+  return pathsBox;
+}
 
+QGroupBox* DisplayPanel::buildSpiralBox(QWidget* body)
+{
   spiralBox_ = new QGroupBox(tr("Spiral"), body);
   auto* spiralForm = new QFormLayout(spiralBox_);
   spiral_ = new QCheckBox(tr("Show"), spiralBox_);
@@ -123,8 +144,12 @@ DisplayPanel::DisplayPanel(SceneView* view, ProcessChart* chart, QAction* chartT
   // Up to three wrapped lines; a short dock must not clip them.
   revolutionText_->setMinimumHeight(3 * revolutionText_->fontMetrics().lineSpacing() + 4);
   spiralForm->addRow(QString(), revolutionText_);
-  layout->addWidget(spiralBox_);
 
+  return spiralBox_;
+}
+
+void DisplayPanel::finishLayout(QWidget* body, QVBoxLayout* layout, QAction* chartToggle)
+{
   auto* chartButton = new QToolButton(body);
   chartButton->setDefaultAction(chartToggle);
   chartButton->setToolButtonStyle(Qt::ToolButtonTextOnly);
@@ -138,7 +163,10 @@ DisplayPanel::DisplayPanel(SceneView* view, ProcessChart* chart, QAction* chartT
   scroll->setFrameShape(QFrame::NoFrame);
   scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
   setWidget(scroll);
+}
 
+void DisplayPanel::connectControls()
+{
   connect(partStyle_, QOverload<int>::of(&QComboBox::currentIndexChanged), this, [this] {
     if (!updating_) setPartStyle(static_cast<PartStyle>(partStyle_->currentData().toInt()));
   });
@@ -168,7 +196,6 @@ DisplayPanel::DisplayPanel(SceneView* view, ProcessChart* chart, QAction* chartT
     if (!updating_) setChannel(static_cast<SpiralChannel>(channel_->currentData().toInt()));
   });
   connect(revolution_, &QSlider::valueChanged, this, &DisplayPanel::setRevolutionLimit);
-  resultsChanged();
 }
 
 void DisplayPanel::render()

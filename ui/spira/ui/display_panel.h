@@ -6,11 +6,13 @@ class QAction;
 class QCheckBox;
 class QComboBox;
 class QDoubleSpinBox;
+class QFormLayout;
 class QGroupBox;
 class QLabel;
 class QSlider;
 class QSpinBox;
 class QToolButton;
+class QVBoxLayout;
 
 namespace spira::ui {
 
@@ -60,6 +62,13 @@ class DisplayPanel : public QDockWidget {
   void framesToggled(bool on);
 
  private:
+  // Construction stages, top to bottom of the dock, then the controls' wiring.
+  QFormLayout* buildPartRow(QWidget* body);
+  QGroupBox* buildFieldBox(QWidget* body);
+  QGroupBox* buildPathsBox(QWidget* body);
+  QGroupBox* buildSpiralBox(QWidget* body);
+  void finishLayout(QWidget* body, QVBoxLayout* layout, QAction* chartToggle);
+  void connectControls();
   void applyFieldRange();
   void refreshRevolutionText();
   void render();

@@ -62,6 +62,21 @@ ExportDialog::ExportDialog(Document& doc, const PluginRegistry& registry, LogPan
   debounce_->setInterval(250);
   connect(debounce_, &QTimer::timeout, this, &ExportDialog::startPreview);
 
+  QToolButton* browse = nullptr;
+  QWidget* settings = buildSettingsSide(browse);
+  QWidget* preview = buildPreviewSide();
+  layOut(settings, preview);
+  connectControls(browse);
+  // The preview follows the plan and the cell while the dialog is open.
+  subscription_ = doc_.subscribe([this](const ChangeSet& c) {
+    if (isVisible() && !exporting_ &&
+        (c.has(Change::Results) || c.has(Change::Cell) || c.has(Change::Part) || c.has(Change::Settings)))
+      refresh();
+  });
+}
+
+QWidget* ExportDialog::buildSettingsSide(QToolButton*& browse)
+{
   // Left: what to write and where.
   auto* settings = new QWidget(this);
   auto* left = new QVBoxLayout(settings);
@@ -77,7 +92,7 @@ ExportDialog::ExportDialog(Document& doc, const PluginRegistry& registry, LogPan
   folder_->setObjectName(QStringLiteral("exportFolder"));
   folder_->setPlaceholderText(tr("Folder the program files go to"));
   folder_->setText(QDir::homePath());
-  auto* browse = new QToolButton(settings);
+  browse = new QToolButton(settings);
   browse->setText(tr("Browse..."));
   folderRow->addWidget(folder_, 1);
   folderRow->addWidget(browse);
@@ -85,7 +100,15 @@ ExportDialog::ExportDialog(Document& doc, const PluginRegistry& registry, LogPan
   form->addRow(QString(), formatText_);
   form->addRow(tr("Output folder"), folderRow);
   left->addLayout(form);
+  left->addWidget(buildSettingTabs(settings), 1);
+  for (auto& [id, panel] : exporterPanels_) connectSettingsPanel(panel);
+  connectSettingsPanel(prepPanel_);
+  prepPanel_->setStored(values_[kPrepSection]);
+  return settings;
+}
 
+QTabWidget* ExportDialog::buildSettingTabs(QWidget* settings)
+{
   auto* settingTabs = new QTabWidget(settings);
   exporterPages_ = new QStackedWidget(settingTabs);
   for (const Plugin* p : registry_.ofKind(PluginKind::Exporter)) {
@@ -101,45 +124,33 @@ ExportDialog::ExportDialog(Document& doc, const PluginRegistry& registry, LogPan
   prepPanel_ = new ParamPanel(kPrepSection, prepSchema(), settingTabs);
   settingTabs->addTab(exporterPages_, tr("Program"));
   settingTabs->addTab(scrolled(prepPanel_, settingTabs), tr("Path preparation"));
-  left->addWidget(settingTabs, 1);
-  for (auto& [id, panel] : exporterPanels_) {
-    connect(panel, &ParamPanel::valueEdited, this,
-            [this](const std::string& section, const std::string& key, const ParamValue& v) {
-              values_[section].set(key, v);
-              exporterPanels_.at(section)->setStored(values_[section]);
-              schedulePreview();
-            });
-    connect(panel, &ParamPanel::keyResetRequested, this,
-            [this](const std::string& section, const std::string& key) {
-              values_[section].erase(key);
-              exporterPanels_.at(section)->setStored(values_[section]);
-              schedulePreview();
-            });
-    connect(panel, &ParamPanel::sectionResetRequested, this, [this](const std::string& section) {
-      values_[section] = ParamSet();
-      exporterPanels_.at(section)->setStored(values_[section]);
-      schedulePreview();
-    });
-  }
-  connect(prepPanel_, &ParamPanel::valueEdited, this,
-          [this](const std::string&, const std::string& key, const ParamValue& v) {
-            values_[kPrepSection].set(key, v);
-            prepPanel_->setStored(values_[kPrepSection]);
+  return settingTabs;
+}
+
+void ExportDialog::connectSettingsPanel(ParamPanel* panel)
+{
+  // A panel names its own section (an exporter's id or "prep") in what it emits.
+  connect(panel, &ParamPanel::valueEdited, this,
+          [this, panel](const std::string& section, const std::string& key, const ParamValue& v) {
+            values_[section].set(key, v);
+            panel->setStored(values_[section]);
             schedulePreview();
           });
-  connect(prepPanel_, &ParamPanel::keyResetRequested, this,
-          [this](const std::string&, const std::string& key) {
-            values_[kPrepSection].erase(key);
-            prepPanel_->setStored(values_[kPrepSection]);
+  connect(panel, &ParamPanel::keyResetRequested, this,
+          [this, panel](const std::string& section, const std::string& key) {
+            values_[section].erase(key);
+            panel->setStored(values_[section]);
             schedulePreview();
           });
-  connect(prepPanel_, &ParamPanel::sectionResetRequested, this, [this](const std::string&) {
-    values_[kPrepSection] = ParamSet();
-    prepPanel_->setStored(values_[kPrepSection]);
+  connect(panel, &ParamPanel::sectionResetRequested, this, [this, panel](const std::string& section) {
+    values_[section] = ParamSet();
+    panel->setStored(values_[section]);
     schedulePreview();
   });
-  prepPanel_->setStored(values_[kPrepSection]);
+}
 
+QWidget* ExportDialog::buildPreviewSide()
+{
   // Right: what would be written, and what to know first.
   auto* preview = new QWidget(this);
   auto* right = new QVBoxLayout(preview);
@@ -157,7 +168,11 @@ ExportDialog::ExportDialog(Document& doc, const PluginRegistry& registry, LogPan
   right->addWidget(warnings_);
   right->addWidget(summary_);
   right->addWidget(previewTabs_, 1);
+  return preview;
+}
 
+void ExportDialog::layOut(QWidget* settings, QWidget* preview)
+{
   auto* split = new QSplitter(Qt::Horizontal, this);
   split->addWidget(settings);
   split->addWidget(preview);
@@ -176,7 +191,10 @@ ExportDialog::ExportDialog(Document& doc, const PluginRegistry& registry, LogPan
   auto* layout = new QVBoxLayout(this);
   layout->addWidget(split, 1);
   layout->addWidget(buttons);
+}
 
+void ExportDialog::connectControls(QToolButton* browse)
+{
   connect(format_, qOverload<int>(&QComboBox::currentIndexChanged), this, [this](int i) {
     exporterPages_->setCurrentIndex(i);
     const auto* e = &registry_.exporter(format_->itemData(i).toString().toStdString());
@@ -189,12 +207,6 @@ ExportDialog::ExportDialog(Document& doc, const PluginRegistry& registry, LogPan
     exporterPages_->setCurrentIndex(0);
     formatText_->setText(fromStd(registry_.exporter(exporterId()).fileDescription()));
   }
-  // The preview follows the plan and the cell while the dialog is open.
-  subscription_ = doc_.subscribe([this](const ChangeSet& c) {
-    if (isVisible() && !exporting_ &&
-        (c.has(Change::Results) || c.has(Change::Cell) || c.has(Change::Part) || c.has(Change::Settings)))
-      refresh();
-  });
 }
 
 ExportDialog::~ExportDialog()

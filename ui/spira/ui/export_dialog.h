@@ -19,6 +19,7 @@ class QPushButton;
 class QStackedWidget;
 class QTabWidget;
 class QTimer;
+class QToolButton;
 
 namespace spira {
 class Document;
@@ -78,6 +79,14 @@ class ExportDialog : public QDialog {
   void exported(bool ok, const QStringList& files);
 
  private:
+  // Construction stages: the settings (format, folder, exporter and preparation panels), the
+  // preview (warnings, summary, files), the splitter with the buttons, the controls' wiring.
+  QWidget* buildSettingsSide(QToolButton*& browse);
+  QTabWidget* buildSettingTabs(QWidget* settings);
+  void connectSettingsPanel(ParamPanel* panel);
+  QWidget* buildPreviewSide();
+  void layOut(QWidget* settings, QWidget* preview);
+  void connectControls(QToolButton* browse);
   void schedulePreview();
   void startPreview();
   void finishPreview(const TaskOutcome& outcome, const std::shared_ptr<ExportPreview>& preview);

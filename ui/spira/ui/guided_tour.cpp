@@ -8,6 +8,7 @@
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QListWidget>
+#include <QMainWindow>
 #include <QPushButton>
 #include <QStandardPaths>
 #include <QStyle>
@@ -16,10 +17,11 @@
 #include <QVBoxLayout>
 
 #include "spira/base/error.h"
+#include "spira/document/document.h"
 #include "spira/io/mesh_writers.h"
 #include "spira/mesh/mesh_primitives.h"
+#include "spira/ui/actions.h"
 #include "spira/ui/display_panel.h"
-#include "spira/ui/main_window.h"
 #include "spira/ui/plan_panel.h"
 #include "spira/ui/scene_view.h"
 #include "spira/ui/task_runner.h"
@@ -57,20 +59,9 @@ QString translated(const char* text)
   return QCoreApplication::translate("GuidedTour", text);
 }
 
-QAction* findExportAction(QWidget* window)
-{
-  for (QAction* a : window->findChildren<QAction*>()) {
-    const QString text = a->text().remove('&');
-    if (a->objectName().contains(QLatin1String("export"), Qt::CaseInsensitive) ||
-        text.startsWith(QLatin1String("Export"), Qt::CaseInsensitive))
-      return a;
-  }
-  return nullptr;
-}
-
 }  // namespace
 
-GuidedTour::GuidedTour(MainWindow& window) : QDialog(&window, Qt::Tool), window_(window)
+GuidedTour::GuidedTour(const WindowParts& parts) : QDialog(&parts.window, Qt::Tool), parts_(parts)
 {
   setObjectName(QStringLiteral("guidedTour"));
   setWindowTitle(tr("Guided Sample"));
@@ -103,8 +94,6 @@ GuidedTour::GuidedTour(MainWindow& window) : QDialog(&window, Qt::Tool), window_
   connect(list_, &QListWidget::currentRowChanged, this, [this](int row) {
     if (row >= 0 && row != current_) setCurrent(row);
   });
-  connect(&window_, &MainWindow::fileOpened, this, &GuidedTour::onFileOpened);
-  connect(&window_, &MainWindow::planFinished, this, &GuidedTour::onPlanFinished);
   setCurrent(0);
 }
 
@@ -144,7 +133,7 @@ bool GuidedTour::runStep(int step)
 {
   if (step < 0) step = current_;
   setCurrent(step);
-  if (window_.busy() && step != Inspect) {
+  if (parts_.busy() && step != Inspect) {
     detail_->setText(tr("Spira is busy with another task; wait for it to finish, then press Do It again."));
     return false;
   }
@@ -160,26 +149,26 @@ bool GuidedTour::runStep(int step)
         return false;
       }
       samplePath_ = file;
-      window_.openFile(file);
+      parts_.openFile(file);
       return true;
     }
     case Plan:
-      if (!window_.document().part()) {
+      if (!parts_.doc.part()) {
         detail_->setText(tr("Open the sample dome first (step 1)."));
         return false;
       }
-      highlight(window_.planPanel()->findChild<QToolButton*>(QStringLiteral("planButton")));
-      window_.plan();
+      highlight(parts_.plan.planButton());
+      parts_.runPlan();
       return true;
     case Inspect:
-      window_.displayPanel()->show();
-      window_.displayPanel()->raise();
-      window_.sceneView()->setCameraPreset(CameraPreset::Iso);
-      highlight(window_.displayPanel()->channelCombo());
+      parts_.display.show();
+      parts_.display.raise();
+      parts_.view.setCameraPreset(CameraPreset::Iso);
+      highlight(parts_.display.channelCombo());
       markDone(Inspect);
       return true;
     case Export: {
-      QAction* exportAction = findExportAction(&window_);
+      QAction* exportAction = parts_.actions.exportProgram;
       if (!exportAction || !exportAction->isEnabled()) {
         detail_->setText(exportAction ? tr("Export needs a plan: do step 2 first.")
                                       : tr("This build has no export command."));
@@ -202,7 +191,7 @@ void GuidedTour::onFileOpened(const QString& path, bool ok)
 
 void GuidedTour::onPlanFinished(const TaskOutcome& outcome)
 {
-  if (outcome.succeeded() && window_.document().results().spiral) markDone(Plan);
+  if (outcome.succeeded() && parts_.doc.results().spiral) markDone(Plan);
 }
 
 void GuidedTour::highlight(QWidget* widget)

@@ -3,26 +3,27 @@
 #include <QDialog>
 #include <QPointer>
 
+#include "spira/ui/window_parts.h"
+
 class QLabel;
 class QListWidget;
 class QPushButton;
 
 namespace spira::ui {
 
-class MainWindow;
 struct TaskOutcome;
 
 // Help > Guided Sample: a short non-modal list of steps ("open the sample dome, plan, inspect,
 // export"). "Do It" performs the current step in the main window and points at the widget that
 // matters; a step is ticked when the window reports it done (the dome opened, the plan finished),
-// and the list moves on.
+// and the list moves on. The window passes its outcomes on through onFileOpened and onPlanFinished.
 class GuidedTour : public QDialog {
   Q_OBJECT
 
  public:
   enum Step { OpenSample = 0, Plan, Inspect, Export, StepCount };
 
-  explicit GuidedTour(MainWindow& window);
+  explicit GuidedTour(const WindowParts& parts);
 
   int currentStep() const { return current_; }
   bool isDone(int step) const;
@@ -34,14 +35,15 @@ class GuidedTour : public QDialog {
   static QString sampleDomeFile();
   QLabel* detailLabel() const { return detail_; }
 
+  void onFileOpened(const QString& path, bool ok);
+  void onPlanFinished(const TaskOutcome& outcome);
+
  private:
   void setCurrent(int step);
   void markDone(int step);
-  void onFileOpened(const QString& path, bool ok);
-  void onPlanFinished(const TaskOutcome& outcome);
   void highlight(QWidget* widget);
 
-  MainWindow& window_;
+  WindowParts parts_;
   QListWidget* list_ = nullptr;
   QLabel* detail_ = nullptr;
   QPushButton* doIt_ = nullptr;

@@ -8,6 +8,9 @@
 #include <QDialogButtonBox>
 #include <QIcon>
 #include <QLabel>
+#include <QMainWindow>
+#include <QMenu>
+#include <QMenuBar>
 #include <QTextBrowser>
 #include <QVBoxLayout>
 
@@ -112,10 +115,13 @@ void showAboutDialog(QWidget* parent)
   delete d;
 }
 
-QString shortcutsText(QWidget* window)
+QString shortcutsText(QMainWindow* window)
 {
   std::vector<std::pair<QString, QString>> rows;
-  for (QAction* a : window->findChildren<QAction*>()) {
+  QList<QAction*> pending = window->menuBar()->actions();
+  while (!pending.isEmpty()) {
+    QAction* a = pending.takeFirst();
+    if (QMenu* sub = a->menu()) pending += sub->actions();
     if (a->shortcuts().isEmpty() || a->text().isEmpty()) continue;
     QStringList keys;
     for (const QKeySequence& k : a->shortcuts()) keys << k.toString(QKeySequence::NativeText).toHtmlEscaped();
@@ -131,7 +137,7 @@ QString shortcutsText(QWidget* window)
   return html;
 }
 
-QDialog* showShortcutsDialog(QWidget* window)
+QDialog* showShortcutsDialog(QMainWindow* window)
 {
   QDialog* d = textDialog(window, QObject::tr("Keyboard Shortcuts"), shortcutsText(window), QSize(460, 560));
   d->setObjectName(QStringLiteral("shortcutsDialog"));

@@ -3,6 +3,7 @@
 #include <QString>
 
 class QDialog;
+class QMainWindow;
 class QWidget;
 
 namespace spira::ui {
@@ -13,9 +14,10 @@ QString aboutText();
 // The About box, modal.
 void showAboutDialog(QWidget* parent);
 
-// Every action of `window` that has a keyboard shortcut, as an HTML table (command, keys).
-QString shortcutsText(QWidget* window);
+// Every command of `window`'s menus (submenus included) that has a keyboard shortcut, as an HTML
+// table (command, keys).
+QString shortcutsText(QMainWindow* window);
 // A non-modal window listing the shortcuts; it is a child of `window` and deletes itself when closed.
-QDialog* showShortcutsDialog(QWidget* window);
+QDialog* showShortcutsDialog(QMainWindow* window);
 
 }  // namespace spira::ui

@@ -139,125 +139,143 @@ void JointChart::rebuild()
     stack->setCurrentWidget(empty_);
     return;
   }
-  if (!matrix_ || charts_.size() != axes) {
-    if (matrix_) view_->GetScene()->RemoveItem(matrix_);
-    matrix_ = vtkSmartPointer<vtkChartMatrix>::New();
-    view_->GetScene()->AddItem(matrix_);
-    const int rows = kRows;
-    const size_t columns = (axes + kRows - 1) / kRows;
-    matrix_->SetSize(vtkVector2i(static_cast<int>(columns), rows));
-    matrix_->SetBorders(62, 40, 16, 8);
-    matrix_->SetGutter(vtkVector2f(70.0f, 14.0f));
-    charts_.clear(), tables_.clear(), lower_.clear(), upper_.clear(), flagged_.clear(), cursors_.clear();
-    cursorPlots_.clear();
-    for (size_t a = 0; a < axes; ++a) {
-      const int col = static_cast<int>(a % columns), row = static_cast<int>(a / columns);
-      // The matrix counts rows from the bottom; A1 goes top left.
-      auto* c = vtkChartXY::SafeDownCast(matrix_->GetChart(vtkVector2i(col, rows - 1 - row)));
-      c->SetShowLegend(false);
-      charts_.push_back(c);
-      tables_.push_back(makeTable("deg"));
-      lower_.push_back(makeTable("min"));
-      upper_.push_back(makeTable("max"));
-      flagged_.push_back(makeTable("deg"));
-      cursors_.push_back(makeTable("deg"));
-      for (vtkTable* limit : {lower_.back().Get(), upper_.back().Get()}) {
-        vtkPlot* l = c->AddPlot(vtkChart::LINE);
-        l->SetInputData(limit, 0, 1);
-        l->SetColor(190, 40, 40, 255);
-        l->SetWidth(1.4f);
-        l->GetPen()->SetLineType(vtkPen::DASH_LINE);
-      }
-      vtkPlot* curve = c->AddPlot(vtkChart::LINE);
-      curve->SetInputData(tables_.back(), 0, 1);
-      curve->SetColor(31, 95, 168, 255);
-      curve->SetWidth(1.6f);
-      auto* bad = vtkPlotPoints::SafeDownCast(c->AddPlot(vtkChart::POINTS));
-      bad->SetInputData(flagged_.back(), 0, 1);
-      bad->SetColor(255, 0, 230, 255);
-      bad->SetMarkerStyle(vtkPlotPoints::CIRCLE);
-      bad->SetMarkerSize(5.0f);
-      vtkPlot* cursor = c->AddPlot(vtkChart::LINE);
-      cursor->SetInputData(cursors_.back(), 0, 1);
-      cursor->SetColor(230, 160, 0, 255);
-      cursor->SetWidth(2.0f);
-      cursor->SetVisible(false);
-      cursorPlots_.push_back(cursor);
-      vtkAxis* x = c->GetAxis(vtkAxis::BOTTOM);
-      const bool bottomRow = a + columns >= axes;
-      x->SetLabelsVisible(bottomRow);
-      x->SetTitle(bottomRow ? "Point index" : "");
-      styleText(x->GetTitleProperties(), 11, true);
-      styleText(x->GetLabelProperties(), 10, false);
-      vtkAxis* y = c->GetAxis(vtkAxis::LEFT);
-      styleText(y->GetTitleProperties(), 12, true);
-      styleText(y->GetLabelProperties(), 10, false);
-      for (vtkAxis* ax : {x, y}) {
-        ax->GetGridPen()->SetColor(225, 228, 234);
-        ax->GetPen()->SetColor(120, 126, 136);
-      }
-    }
-  }
+  if (!matrix_ || charts_.size() != axes) buildCharts(axes);
   const double last = static_cast<double>(n - 1);
   for (size_t a = 0; a < axes; ++a) {
+    auto [lo, hi] = fillAxis(*k, a);
     const AxisLimit& lim = k->axes[a];
-    vtkTable* t = tables_[a];
-    vtkTable* f = flagged_[a];
-    t->SetNumberOfRows(static_cast<vtkIdType>(n));
-    f->SetNumberOfRows(0);
-    double lo = HUGE_VAL, hi = -HUGE_VAL;
-    for (size_t i = 0; i < n; ++i) {
-      const double v = axisValuesDeg(*k, i).at(a);
-      t->SetValue(static_cast<vtkIdType>(i), 0, static_cast<double>(i));
-      t->SetValue(static_cast<vtkIdType>(i), 1, v);
-      lo = std::min(lo, v), hi = std::max(hi, v);
-      const bool flagged = i < k->checks.size() && (!k->checks[i].reachable || k->checks[i].collision);
-      if (flagged) {
-        const vtkIdType r = f->GetNumberOfRows();
-        f->SetNumberOfRows(r + 1);
-        f->SetValue(r, 0, static_cast<double>(i));
-        f->SetValue(r, 1, v);
-      }
-    }
-    t->Modified();
-    f->Modified();
     setLine(lower_[a], 0.0, last, lim.minDeg);
     setLine(upper_[a], 0.0, last, lim.maxDeg);
-    vtkChartXY* c = charts_[a];
-    vtkAxis* x = c->GetAxis(vtkAxis::BOTTOM);
-    x->SetBehavior(vtkAxis::FIXED);
-    x->SetRange(0.0, last);
-    vtkAxis* y = c->GetAxis(vtkAxis::LEFT);
-    y->SetTitle(lim.name + " (deg)");
-    y->SetBehavior(vtkAxis::FIXED);
-    // The limits frame the curve: the margin to them is what the chart is read for. Only a
-    // multi-turn axis (a turntable's +/-100 turns) shows the curve's own range instead, where its
-    // limits would flatten the curve into a line.
-    const bool near = lim.maxDeg - lim.minDeg <= 720.0;
-    const bool showMin = near, showMax = near;
-    if (showMin) lo = std::min(lo, lim.minDeg);
-    if (showMax) hi = std::max(hi, lim.maxDeg);
-    const double pad = 0.08 * std::max(hi - lo, 1.0);
-    y->SetRange(lo - pad, hi + pad);
-    // Ticks at the limits shown and at zero (or the middle) read at a glance on short charts.
-    vtkNew<vtkDoubleArray> ticks;
-    vtkNew<vtkStringArray> labels;
-    std::vector<double> at;
-    if (showMin) at.push_back(lim.minDeg);
-    const double mid = lo < 0.0 && hi > 0.0 ? 0.0 : 0.5 * (lo + hi);
-    at.push_back(mid);
-    if (showMax) at.push_back(lim.maxDeg);
-    if (!showMin && !showMax) at = {lo, mid, hi};
-    const int decimals = hi - lo < 10.0 ? 1 : 0;
-    for (double v : at) {
-      ticks->InsertNextValue(v);
-      labels->InsertNextValue(QString::number(v, 'f', decimals).toStdString());
-    }
-    y->SetCustomTickPositions(ticks, labels);
-    for (vtkIdType p = 0; p < c->GetNumberOfPlots(); ++p) c->GetPlot(p)->GetInput()->Modified();
+    frameAxis(a, lim, last, lo, hi);
   }
   stack->setCurrentWidget(page_);
   updateCursor();
+}
+
+void JointChart::buildCharts(size_t axes)
+{
+  if (matrix_) view_->GetScene()->RemoveItem(matrix_);
+  matrix_ = vtkSmartPointer<vtkChartMatrix>::New();
+  view_->GetScene()->AddItem(matrix_);
+  const int rows = kRows;
+  const size_t columns = (axes + kRows - 1) / kRows;
+  matrix_->SetSize(vtkVector2i(static_cast<int>(columns), rows));
+  matrix_->SetBorders(62, 40, 16, 8);
+  matrix_->SetGutter(vtkVector2f(70.0f, 14.0f));
+  charts_.clear(), tables_.clear(), lower_.clear(), upper_.clear(), flagged_.clear(), cursors_.clear();
+  cursorPlots_.clear();
+  for (size_t a = 0; a < axes; ++a) addAxisChart(a, axes, columns);
+}
+
+void JointChart::addAxisChart(size_t a, size_t axes, size_t columns)
+{
+  const int col = static_cast<int>(a % columns), row = static_cast<int>(a / columns);
+  // The matrix counts rows from the bottom; A1 goes top left.
+  auto* c = vtkChartXY::SafeDownCast(matrix_->GetChart(vtkVector2i(col, kRows - 1 - row)));
+  c->SetShowLegend(false);
+  charts_.push_back(c);
+  tables_.push_back(makeTable("deg"));
+  lower_.push_back(makeTable("min"));
+  upper_.push_back(makeTable("max"));
+  flagged_.push_back(makeTable("deg"));
+  cursors_.push_back(makeTable("deg"));
+  for (vtkTable* limit : {lower_.back().Get(), upper_.back().Get()}) {
+    vtkPlot* l = c->AddPlot(vtkChart::LINE);
+    l->SetInputData(limit, 0, 1);
+    l->SetColor(190, 40, 40, 255);
+    l->SetWidth(1.4f);
+    l->GetPen()->SetLineType(vtkPen::DASH_LINE);
+  }
+  vtkPlot* curve = c->AddPlot(vtkChart::LINE);
+  curve->SetInputData(tables_.back(), 0, 1);
+  curve->SetColor(31, 95, 168, 255);
+  curve->SetWidth(1.6f);
+  auto* bad = vtkPlotPoints::SafeDownCast(c->AddPlot(vtkChart::POINTS));
+  bad->SetInputData(flagged_.back(), 0, 1);
+  bad->SetColor(255, 0, 230, 255);
+  bad->SetMarkerStyle(vtkPlotPoints::CIRCLE);
+  bad->SetMarkerSize(5.0f);
+  vtkPlot* cursor = c->AddPlot(vtkChart::LINE);
+  cursor->SetInputData(cursors_.back(), 0, 1);
+  cursor->SetColor(230, 160, 0, 255);
+  cursor->SetWidth(2.0f);
+  cursor->SetVisible(false);
+  cursorPlots_.push_back(cursor);
+  vtkAxis* x = c->GetAxis(vtkAxis::BOTTOM);
+  const bool bottomRow = a + columns >= axes;
+  x->SetLabelsVisible(bottomRow);
+  x->SetTitle(bottomRow ? "Point index" : "");
+  styleText(x->GetTitleProperties(), 11, true);
+  styleText(x->GetLabelProperties(), 10, false);
+  vtkAxis* y = c->GetAxis(vtkAxis::LEFT);
+  styleText(y->GetTitleProperties(), 12, true);
+  styleText(y->GetLabelProperties(), 10, false);
+  for (vtkAxis* ax : {x, y}) {
+    ax->GetGridPen()->SetColor(225, 228, 234);
+    ax->GetPen()->SetColor(120, 126, 136);
+  }
+}
+
+std::pair<double, double> JointChart::fillAxis(const KinematicsResult& k, size_t a)
+{
+  const size_t n = k.size();
+  vtkTable* t = tables_[a];
+  vtkTable* f = flagged_[a];
+  t->SetNumberOfRows(static_cast<vtkIdType>(n));
+  f->SetNumberOfRows(0);
+  double lo = HUGE_VAL, hi = -HUGE_VAL;
+  for (size_t i = 0; i < n; ++i) {
+    const double v = axisValuesDeg(k, i).at(a);
+    t->SetValue(static_cast<vtkIdType>(i), 0, static_cast<double>(i));
+    t->SetValue(static_cast<vtkIdType>(i), 1, v);
+    lo = std::min(lo, v), hi = std::max(hi, v);
+    const bool flagged = i < k.checks.size() && (!k.checks[i].reachable || k.checks[i].collision);
+    if (flagged) {
+      const vtkIdType r = f->GetNumberOfRows();
+      f->SetNumberOfRows(r + 1);
+      f->SetValue(r, 0, static_cast<double>(i));
+      f->SetValue(r, 1, v);
+    }
+  }
+  t->Modified();
+  f->Modified();
+  return {lo, hi};
+}
+
+void JointChart::frameAxis(size_t a, const AxisLimit& lim, double last, double lo, double hi)
+{
+  vtkChartXY* c = charts_[a];
+  vtkAxis* x = c->GetAxis(vtkAxis::BOTTOM);
+  x->SetBehavior(vtkAxis::FIXED);
+  x->SetRange(0.0, last);
+  vtkAxis* y = c->GetAxis(vtkAxis::LEFT);
+  y->SetTitle(lim.name + " (deg)");
+  y->SetBehavior(vtkAxis::FIXED);
+  // The limits frame the curve: the margin to them is what the chart is read for. Only a
+  // multi-turn axis (a turntable's +/-100 turns) shows the curve's own range instead, where its
+  // limits would flatten the curve into a line.
+  const bool near = lim.maxDeg - lim.minDeg <= 720.0;
+  const bool showMin = near, showMax = near;
+  if (showMin) lo = std::min(lo, lim.minDeg);
+  if (showMax) hi = std::max(hi, lim.maxDeg);
+  const double pad = 0.08 * std::max(hi - lo, 1.0);
+  y->SetRange(lo - pad, hi + pad);
+  // Ticks at the limits shown and at zero (or the middle) read at a glance on short charts.
+  vtkNew<vtkDoubleArray> ticks;
+  vtkNew<vtkStringArray> labels;
+  std::vector<double> at;
+  if (showMin) at.push_back(lim.minDeg);
+  const double mid = lo < 0.0 && hi > 0.0 ? 0.0 : 0.5 * (lo + hi);
+  at.push_back(mid);
+  if (showMax) at.push_back(lim.maxDeg);
+  if (!showMin && !showMax) at = {lo, mid, hi};
+  const int decimals = hi - lo < 10.0 ? 1 : 0;
+  for (double v : at) {
+    ticks->InsertNextValue(v);
+    labels->InsertNextValue(QString::number(v, 'f', decimals).toStdString());
+  }
+  y->SetCustomTickPositions(ticks, labels);
+  for (vtkIdType p = 0; p < c->GetNumberOfPlots(); ++p) c->GetPlot(p)->GetInput()->Modified();
 }
 
 void JointChart::updateCursor()

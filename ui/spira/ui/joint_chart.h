@@ -1,6 +1,7 @@
 #pragma once
 
 #include <memory>
+#include <utility>
 #include <vector>
 
 #include <QImage>
@@ -20,8 +21,9 @@ class vtkPlot;
 class vtkTable;
 
 namespace spira {
+struct AxisLimit;
 struct KinematicsResult;
-}
+}  // namespace spira
 
 namespace spira::ui {
 
@@ -62,7 +64,13 @@ class JointChart : public QWidget {
   bool eventFilter(QObject* watched, QEvent* event) override;
 
  private:
+  // rebuild(): the charts (made again when the number of axes changes), then per axis its curve
+  // with the flagged points, its limit lines and its framing.
   void rebuild();
+  void buildCharts(size_t axes);
+  void addAxisChart(size_t a, size_t axes, size_t columns);
+  std::pair<double, double> fillAxis(const KinematicsResult& k, size_t a);
+  void frameAxis(size_t a, const AxisLimit& lim, double last, double lo, double hi);
   void updateCursor();
 
   PointSelection* selection_;

@@ -27,6 +27,8 @@ class LogPanel : public QDockWidget {
   LogLevel level(int row) const;
   // The entry as shown: "[hh:mm:ss] message", and "Hint: ..." on the next line when there is one.
   QString text(int row) const;
+  // The list of entries (its items carry the data a message names, e.g. a path point).
+  QListWidget* list() const { return list_; }
 
  private:
   void showContextMenu(const QPoint& pos);

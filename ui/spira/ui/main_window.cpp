@@ -72,6 +72,35 @@ MainWindow::MainWindow(Document& doc, const PluginRegistry& registry, MainWindow
   log_ = new LogPanel(this);
   addDockWidget(Qt::BottomDockWidgetArea, log_);
   chart_ = new ProcessChart(this);
+  addChartDock();
+  selection_ = new PointSelection(this);
+  jointChart_ = new JointChart(selection_, this);
+  addJointDock();
+
+  planPanel_ = new PlanPanel(doc_, registry_, this);
+  addDockWidget(Qt::RightDockWidgetArea, planPanel_);
+  display_ = new DisplayPanel(view_, chart_, chartDock_->toggleViewAction(), this);
+  addDockWidget(Qt::LeftDockWidgetArea, display_);
+  tabifyDockWidget(treeDock_, display_);
+  treeDock_->raise();
+
+  createActionsAndTasks();
+  createStatusBar();
+  createCellWorkspace();
+  connectActions();
+  // Placement dock, presets, themes, help, autosave: before the layout is restored, which includes its dock.
+  installComfortFeatures();
+  restoreLayout();
+
+  subscription_ = doc_.subscribe([this](const ChangeSet& c) { onDocumentChanged(c); });
+  ChangeSet all;
+  all.flags = ~0u;
+  onDocumentChanged(all);
+  log_->info(tr("Spira %1 ready.").arg(QString::fromUtf8(kVersion)));
+}
+
+void MainWindow::addChartDock()
+{
   chartDock_ = new QDockWidget(tr("Process Chart"), this);
   chartDock_->setObjectName("chartDock");
   chartDock_->setWidget(chart_);
@@ -91,9 +120,10 @@ MainWindow::MainWindow(Document& doc, const PluginRegistry& registry, MainWindow
       if (chartDock_->height() < 280) resizeDocks({chartDock_}, {300}, Qt::Vertical);
     });
   });
+}
 
-  selection_ = new PointSelection(this);
-  jointChart_ = new JointChart(selection_, this);
+void MainWindow::addJointDock()
+{
   jointDock_ = new QDockWidget(tr("Joint Chart"), this);
   jointDock_->setObjectName("jointDock");
   jointDock_->setWidget(jointChart_);
@@ -111,14 +141,12 @@ MainWindow::MainWindow(Document& doc, const PluginRegistry& registry, MainWindow
       if (jointDock_->height() < 330) resizeDocks({jointDock_}, {340}, Qt::Vertical);
     });
   });
+}
 
-  planPanel_ = new PlanPanel(doc_, registry_, this);
-  addDockWidget(Qt::RightDockWidgetArea, planPanel_);
-  display_ = new DisplayPanel(view_, chart_, chartToggle, this);
-  addDockWidget(Qt::LeftDockWidgetArea, display_);
-  tabifyDockWidget(treeDock_, display_);
-  treeDock_->raise();
-
+void MainWindow::createActionsAndTasks()
+{
+  QAction* chartToggle = chartDock_->toggleViewAction();
+  QAction* jointToggle = jointDock_->toggleViewAction();
   actions_ = Actions::create(
       this, {treeDock_->toggleViewAction(), display_->toggleViewAction(), planPanel_->toggleViewAction(),
              log_->toggleViewAction(), chartToggle, jointToggle});
@@ -134,16 +162,23 @@ MainWindow::MainWindow(Document& doc, const PluginRegistry& registry, MainWindow
     if (planning_) planPanel_->progress()->setProgress(fraction, stage);
   });
   connect(planPanel_->progress(), &StageProgress::cancelRequested, this, &MainWindow::cancelPlan);
+}
 
+void MainWindow::createStatusBar()
+{
   meshLabel_ = new QLabel(this);
   unitsLabel_ = new QLabel(tr("Units: mm"), this);
   unitsLabel_->setToolTip(tr("Lengths are shown and stored in millimetres"));
   statusBar()->addPermanentWidget(meshLabel_);
   statusBar()->addPermanentWidget(unitsLabel_);
   inspector_ = new PathInspector(selection_, view_, chart_, log_, statusBar(), this);
+}
+
+void MainWindow::createCellWorkspace()
+{
   // Made once the window's own docks are laid out, so the cell's docks take their room from the
   // plan's column and not from the 3D view.
-  cellWorkspace_ = new CellWorkspace(*this, doc_, *view_, *log_);
+  cellWorkspace_ = new CellWorkspace(*this, *planPanel_, doc_, *view_, *log_);
   QAction* cellToggle = cellWorkspace_->cellDock()->toggleViewAction();
   cellToggle->setText(tr("C&ell"));
   cellToggle->setToolTip(tr("The robot cell: robot, torch, positioner and where the part sits"));
@@ -159,10 +194,30 @@ MainWindow::MainWindow(Document& doc, const PluginRegistry& registry, MainWindow
     if (i >= 0 && sim->hasMotion() && !sim->playing()) sim->setIndex(static_cast<size_t>(i));
   });
   connect(display_, &DisplayPanel::framesToggled, inspector_, &PathInspector::setFramesVisible);
+}
 
-  connectActions();
-  // Placement dock, presets, themes, help, autosave: before the layout is restored, which includes its dock.
-  new ComfortFeatures(*this, options_.persistLayout, options_.interactive);
+void MainWindow::installComfortFeatures()
+{
+  const WindowParts parts{*this,
+                          doc_,
+                          actions_,
+                          *view_,
+                          *treeDock_,
+                          *display_,
+                          *planPanel_,
+                          *log_,
+                          *tasks_,
+                          *cellWorkspace_->simulationPanel(),
+                          [this](const QString& path) { openFile(path); },
+                          [this] { plan(); },
+                          [this] { return busy(); }};
+  comfort_ = new ComfortFeatures(parts, options_.persistLayout, options_.interactive);
+  connect(this, &MainWindow::fileOpened, comfort_, &ComfortFeatures::fileOpened);
+  connect(this, &MainWindow::planFinished, comfort_, &ComfortFeatures::planFinished);
+}
+
+void MainWindow::restoreLayout()
+{
   if (options_.persistLayout) {
     QSettings settings;
     restoreGeometry(settings.value(kGeometryKey).toByteArray());
@@ -172,12 +227,6 @@ MainWindow::MainWindow(Document& doc, const PluginRegistry& registry, MainWindow
   }
   view_->setEdgesVisible(actions_.showEdges->isChecked());
   view_->setBoundingBoxVisible(actions_.showBoundingBox->isChecked());
-
-  subscription_ = doc_.subscribe([this](const ChangeSet& c) { onDocumentChanged(c); });
-  ChangeSet all;
-  all.flags = ~0u;
-  onDocumentChanged(all);
-  log_->info(tr("Spira %1 ready.").arg(QString::fromUtf8(kVersion)));
 }
 
 MainWindow::~MainWindow()
@@ -385,7 +434,7 @@ void MainWindow::showAbout()
 QImage MainWindow::captureImage()
 {
   // A picture is still: drawn at full quality even while a job keeps the view fast.
-  auto* quality = view_->findChild<InteractiveQuality*>();
+  InteractiveQuality* quality = comfort_->interactiveQuality();
   if (quality) quality->fullQualityNow();
   view_->render();
   QApplication::processEvents();

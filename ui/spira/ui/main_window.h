@@ -32,6 +32,7 @@ class CompareView;
 class PathInspector;
 class JointChart;
 class CellWorkspace;
+class ComfortFeatures;
 class PointSelection;
 class RecentFiles;
 class SceneView;
@@ -102,6 +103,8 @@ class MainWindow : public QMainWindow {
   JointChart* jointChart() const { return jointChart_; }
   QDockWidget* jointDock() const { return jointDock_; }
   CellWorkspace* cellWorkspace() const { return cellWorkspace_; }
+  // Placement, presets, themes, help and autosave (comfort_features.h).
+  ComfortFeatures* comfortFeatures() const { return comfort_; }
   // File > Export Robot Program (made on first use).
   ExportDialog* exportDialog();
   void showExportDialog();
@@ -119,6 +122,14 @@ class MainWindow : public QMainWindow {
   void dropEvent(QDropEvent* event) override;
 
  private:
+  // Construction stages (the constructor makes the view and the docks, then calls these in order).
+  void addChartDock();
+  void addJointDock();
+  void createActionsAndTasks();
+  void createStatusBar();
+  void createCellWorkspace();
+  void installComfortFeatures();
+  void restoreLayout();
   void connectActions();
   void onDocumentChanged(const ChangeSet& changes);
   void refreshScene(bool partChanged);
@@ -162,6 +173,7 @@ class MainWindow : public QMainWindow {
   JointChart* jointChart_ = nullptr;
   QDockWidget* jointDock_ = nullptr;
   CellWorkspace* cellWorkspace_ = nullptr;
+  ComfortFeatures* comfort_ = nullptr;
   ExportDialog* exportDialog_ = nullptr;
   CompareView* compareView_ = nullptr;
   QLabel* meshLabel_ = nullptr;

@@ -28,10 +28,10 @@
 
 #include "spira/base/units.h"
 #include "spira/document/results.h"
+#include "spira/pipeline/document_plan.h"
 #include "spira/ui/frame_glyphs.h"
 #include "spira/ui/log_panel.h"
 #include "spira/ui/offending_points.h"
-#include "spira/pipeline/document_plan.h"
 #include "spira/ui/point_selection.h"
 #include "spira/ui/process_chart.h"
 #include "spira/ui/scene_view.h"
@@ -73,7 +73,7 @@ PathInspector::PathInspector(PointSelection* selection, SceneView* view, Process
   picker_->PickFromListOn();
   picker_->AddPickList(view_->spiralLayer().actor());
   picker_->SetTolerance(0.006);
-  viewWidget_ = view_->findChild<QVTKOpenGLNativeWidget*>();
+  viewWidget_ = view_->vtkWidget();
   if (viewWidget_) viewWidget_->installEventFilter(this);
 
   for (int k = 0; k < 2; ++k) {
@@ -91,11 +91,11 @@ PathInspector::PathInspector(PointSelection* selection, SceneView* view, Process
     line->SetSelectable(false);
     cursorPlots_[static_cast<size_t>(k)] = line;
   }
-  chartWidget_ = chart_->findChild<QVTKOpenGLNativeWidget*>();
+  chartWidget_ = chart_->vtkWidget();
   if (chartWidget_) chartWidget_->installEventFilter(this);
 
   if (log_) {
-    logList_ = log_->findChild<QListWidget*>();
+    logList_ = log_->list();
     if (logList_)
       connect(logList_, &QListWidget::itemClicked, this, [this](QListWidgetItem* item) {
         const QVariant v = item->data(kPointRole);

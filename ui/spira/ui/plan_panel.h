@@ -47,6 +47,7 @@ class PlanPanel : public QDockWidget {
   QComboBox* closureFinderCombo() const { return closure_; }
   QTabWidget* tabs() const { return tabs_; }
   StageProgress* progress() const { return progress_; }
+  QToolButton* planButton() const { return planButton_; }
   // The verdict on the plan in the document ("Feasible plan: ..." / "Infeasible plan: ...").
   QLabel* verdictLabel() const { return verdict_; }
 

@@ -55,6 +55,8 @@ class ProcessChart : public QWidget {
   QString abscissaUnit() const { return metres_ ? QStringLiteral("m") : QStringLiteral("mm"); }
   void render();
   QImage grabImage();
+  // The OpenGL widget that shows the charts (mouse events of the charts arrive there).
+  QVTKOpenGLNativeWidget* vtkWidget() const { return widget_; }
 
  private:
   QVTKOpenGLNativeWidget* widget_ = nullptr;

@@ -56,6 +56,8 @@ class SceneView : public QWidget {
   // Shows a plan's results (field, generatrices, closure point, spiral) computed in the part
   // frame, drawn where T_world_part places the part.
   void showResults(const Results& results, const Transform& T_world_part);
+  // The OpenGL widget that shows the scene (mouse events of the view arrive there).
+  QVTKOpenGLNativeWidget* vtkWidget() const { return vtkWidget_; }
   FieldLayer& fieldLayer();
   PathLayers& pathLayers();
   SpiralLayer& spiralLayer();

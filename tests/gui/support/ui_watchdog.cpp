@@ -1,4 +1,4 @@
-#include "spira/ui/ui_watchdog.h"
+#include "support/ui_watchdog.h"
 
 #include <algorithm>
 
