@@ -20,10 +20,10 @@
 #include "spira/base/version.h"
 #include "spira/document/document.h"
 #include "spira/io/isolated_import.h"
-#include "spira/ui/application.h"
-#include "spira/ui/comfort_features.h"
-#include "spira/ui/main_window.h"
-#include "spira/ui/screenshot.h"
+#include "spira/ui/window/application.h"
+#include "spira/ui/window/comfort_features.h"
+#include "spira/ui/window/main_window.h"
+#include "spira/ui/window/screenshot.h"
 
 namespace {
 

@@ -10,7 +10,7 @@
 #include <gtest/gtest.h>
 
 #include "spira/base/version.h"
-#include "spira/ui/screenshot.h"
+#include "spira/ui/window/screenshot.h"
 #include "support/gui_test_support.h"
 #include "support/test_support.h"
 

@@ -20,10 +20,10 @@
 #include "spira/base/atomic_file.h"
 #include "spira/base/units.h"
 #include "spira/document/document.h"
-#include "spira/ui/color_maps.h"
-#include "spira/ui/compare_view.h"
 #include "spira/pipeline/comparison_reader.h"
-#include "spira/ui/main_window.h"
+#include "spira/ui/charts/compare_view.h"
+#include "spira/ui/views/color_maps.h"
+#include "spira/ui/window/main_window.h"
 #include "support/gui_test_support.h"
 #include "support/test_support.h"
 

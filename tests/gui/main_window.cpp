@@ -13,12 +13,12 @@
 
 #include "spira/document/document.h"
 #include "spira/mesh/mesh_primitives.h"
-#include "spira/ui/document_tree.h"
-#include "spira/ui/log_panel.h"
-#include "spira/ui/main_window.h"
-#include "spira/ui/recent_files.h"
-#include "spira/ui/scene_view.h"
-#include "spira/ui/screenshot.h"
+#include "spira/ui/panels/document_tree.h"
+#include "spira/ui/panels/log_panel.h"
+#include "spira/ui/views/scene_view.h"
+#include "spira/ui/window/main_window.h"
+#include "spira/ui/window/recent_files.h"
+#include "spira/ui/window/screenshot.h"
 #include "support/gui_test_support.h"
 #include "support/test_support.h"
 

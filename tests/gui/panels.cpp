@@ -8,8 +8,8 @@
 
 #include <gtest/gtest.h>
 
-#include "spira/ui/log_panel.h"
-#include "spira/ui/recent_files.h"
+#include "spira/ui/panels/log_panel.h"
+#include "spira/ui/window/recent_files.h"
 #include "support/gui_test_support.h"
 #include "support/test_support.h"
 

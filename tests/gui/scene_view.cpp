@@ -17,9 +17,9 @@
 
 #include "spira/document/document.h"
 #include "spira/mesh/mesh_primitives.h"
-#include "spira/ui/main_window.h"
-#include "spira/ui/scene_view.h"
-#include "spira/ui/substrate_grid.h"
+#include "spira/ui/views/scene_view.h"
+#include "spira/ui/views/substrate_grid.h"
+#include "spira/ui/window/main_window.h"
 #include "support/gui_test_support.h"
 
 namespace spira::test {

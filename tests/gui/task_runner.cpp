@@ -17,8 +17,8 @@
 
 #include "spira/base/error.h"
 #include "spira/base/progress.h"
-#include "spira/ui/background_priority.h"
-#include "spira/ui/task_runner.h"
+#include "spira/ui/jobs/background_priority.h"
+#include "spira/ui/jobs/task_runner.h"
 
 namespace spira::test {
 namespace {

@@ -10,9 +10,9 @@
 #include "builtin_plugins.h"
 
 #include "spira/document/document.h"
-#include "spira/ui/log_panel.h"
-#include "spira/ui/main_window.h"
-#include "spira/ui/task_runner.h"
+#include "spira/ui/jobs/task_runner.h"
+#include "spira/ui/panels/log_panel.h"
+#include "spira/ui/window/main_window.h"
 #include "support/gui_test_support.h"
 #include "support/test_support.h"
 

@@ -7,7 +7,7 @@
 
 #include <gtest/gtest.h>
 
-#include "spira/ui/application.h"
+#include "spira/ui/window/application.h"
 
 int main(int argc, char** argv)
 {

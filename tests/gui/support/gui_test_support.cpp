@@ -14,8 +14,8 @@
 
 #include "spira/io/mesh_writers.h"
 #include "spira/mesh/mesh_primitives.h"
-#include "spira/ui/main_window.h"
-#include "spira/ui/scene_view.h"
+#include "spira/ui/views/scene_view.h"
+#include "spira/ui/window/main_window.h"
 #include "support/test_support.h"
 
 namespace spira::test {

@@ -1,9 +1,0 @@
-#include "spira/ui/interaction_style.h"
-
-#include <vtkObjectFactory.h>
-
-namespace spira::ui {
-
-vtkStandardNewMacro(QuietTrackballStyle);
-
-}  // namespace spira::ui
