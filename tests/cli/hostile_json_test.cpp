@@ -144,8 +144,10 @@ TEST_F(HostileReport, SyntaxErrorGivesLineAndColumn)
 TEST_F(HostileReport, ProjectsStoredReportOfTheWrongTypeIsNamed)
 {
   Document doc;
-  doc.setProcess(std::make_shared<const Trajectory>(readTrajectoryCsv(*dir_ / "plan" / "trajectory.csv")),
-                 std::make_shared<const nlohmann::json>(nlohmann::json{{"path_length", "long"}}));
+  const auto path = std::make_shared<const Trajectory>(readTrajectoryCsv(*dir_ / "plan" / "trajectory.csv"));
+  // The spiral stage's report holds the plan's figures (report.json's top level).
+  doc.setSpiral(path, std::make_shared<const nlohmann::json>(nlohmann::json{{"path_length", "long"}}));
+  doc.setProcess(path, std::make_shared<const nlohmann::json>(nlohmann::json{{"build_time_s", 60.0}}));
   const fs::path project = tmp_ / "wall.spira";
   doc.saveAs(project);
   const CliRun r = runCli({"export", project.string(), "--format", "krl", "-o", (tmp_ / "program").string()});

@@ -32,7 +32,7 @@ namespace spira::ui {
 
 namespace {
 
-const char* const kPrepSection = "prep";
+const char* const kPrepSection = kPrepSectionName;
 
 QString fromStd(const std::string& s)
 {
