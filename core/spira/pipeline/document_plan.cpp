@@ -172,7 +172,8 @@ DocumentPlan planDocument(const DocumentState& snapshot, const PluginRegistry& r
         {"kinematics",
          std::chrono::duration<double>(std::chrono::steady_clock::now() - motionStart).count()});
   if (kinematics.report)
-    for (const auto& [key, value] : kinematics.report->items()) out.report[key] = value;
+    for (const auto& [key, value] : kinematics.report->items())
+      if (key != "seconds") out.report[key] = value;  // report.json's timings_s has it as "kinematics"
   out.report["timings_s"] = timingsJson(plan.timings);
   out.warnings.insert(out.warnings.end(), kinematics.warnings.begin(), kinematics.warnings.end());
   out.motionOk = !snapshot.cell || kinematics.ok;
