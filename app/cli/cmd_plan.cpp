@@ -16,6 +16,7 @@
 #include "spira/io/isolated_import.h"
 #include "spira/pipeline/document_plan.h"
 #include "spira/pipeline/export_job.h"
+#include "spira/pipeline/planned_path.h"
 #include "spira/pipeline/prep_schema.h"
 #include "spira/planning/joints_csv.h"
 #include "spira/planning/plan_advice.h"
@@ -25,6 +26,7 @@
 #include "spira/planning/settings_sections.h"
 #include "spira/plugin/strategy_name.h"
 #include "spira/robotcell/cell_file.h"
+#include "spira/robotcell/robot_cell.h"
 
 namespace fs = std::filesystem;
 
@@ -162,11 +164,11 @@ int cmdPlan(const std::vector<std::string>& argv)
   ensureWritableDirectory(outDir);
   // Everything the user named is read before the (long) planning starts.
   DocumentState snapshot;
+  std::optional<RobotCell> cell;  // checked now, and what the program is solved on
   if (!cellFile.empty()) {
-    auto record = std::make_shared<const CellRecord>(readCellFile(cellFile));
-    if (const RobotCell cell(*record); !cell.canSolve())
-      throw InputError(cell.ikRefusal(), "choose a cell with a 6-axis arm");
-    snapshot.cell = std::move(record);
+    snapshot.cell = std::make_shared<const CellRecord>(readCellFile(cellFile));
+    cell.emplace(*snapshot.cell);
+    if (!cell->canSolve()) throw InputError(cell->ikRefusal(), "choose a cell with a 6-axis arm");
     // The robot's link meshes are read in the import helper after planning: it loads meanwhile.
     prestartImportHelper();
   }
@@ -198,7 +200,8 @@ int cmdPlan(const std::vector<std::string>& argv)
   report["timings_s"]["import"] = importSeconds;
 
   const Results& r = plan.results;
-  const Trajectory& finalPath = r.kinematics ? r.kinematics->path : *r.process;
+  const PlannedPath planned = plannedPathOf(r);
+  const Trajectory& finalPath = *planned.trajectory;
   std::vector<OutputFile> planFiles{{"trajectory.csv", trajectoryCsv(finalPath)}};
   if (r.kinematics) planFiles.push_back({"joints.csv", jointsCsv(r.kinematics->joints)});
   planFiles.push_back({"report.json", report.dump(2) + "\n"});
@@ -216,11 +219,8 @@ int cmdPlan(const std::vector<std::string>& argv)
     job.exporterId = exporter->id();
     job.exporterParams = exporterValues;
     job.prep = prep;
-    const std::optional<RobotCell> cell =
-        snapshot.cell ? std::optional<RobotCell>(RobotCell(*snapshot.cell)) : std::nullopt;
     job.cell = cell ? &*cell : nullptr;
-    if (r.kinematics)  // unresolved collisions of the plan are flagged in the program (refused unless forced)
-      for (const JointPoint& p : r.kinematics->joints.points) job.plannedCollision.push_back(p.collision);
+    job.plannedCollision = planned.collision;  // flagged in the program, refused unless forced
     job.header = programHeader(positional[0], cellFile, summarisePlanReport(report, "the plan's report"));
     const ExportOutcome exported = exportTrajectory(registry, finalPath, job, outDir, progress);
     printExportSummary(exported, std::cout);

@@ -12,6 +12,7 @@
 #include "spira/document/document.h"
 #include "spira/io/isolated_import.h"
 #include "spira/pipeline/document_plan.h"
+#include "spira/pipeline/planned_path.h"
 #include "spira/planning/joints_csv.h"
 #include "spira/planning/plan_files.h"
 
@@ -57,8 +58,7 @@ int cmdPlanProject(Args args, const fs::path& project)
   const DocumentPlan plan = planDocument(snapshot, builtinRegistry(), progress);
 
   const Results& r = plan.results;
-  const Trajectory& path = r.kinematics ? r.kinematics->path : *r.process;
-  std::vector<OutputFile> files{{"trajectory.csv", trajectoryCsv(path)}};
+  std::vector<OutputFile> files{{"trajectory.csv", trajectoryCsv(*plannedPathOf(r).trajectory)}};
   if (r.kinematics) files.push_back({"joints.csv", jointsCsv(r.kinematics->joints)});
   files.push_back({"report.json", folderReport(doc, project, plan).dump(2) + "\n"});
   replaceOutputSet(outDir, OutputKind::Plan, files);

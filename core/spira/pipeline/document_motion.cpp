@@ -47,7 +47,6 @@ DocumentMotion solveDocumentMotion(const DocumentState& snapshot, const Trajecto
     PlanMotion motion = solvePlanMotion(cell, frame.identity() ? plan : buildPlan, settings, progress);
     if (!frame.identity()) frame.toPart(motion.trajectory);
     nlohmann::json report = motion.report;
-    report["seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     auto result = std::make_shared<const KinematicsResult>(
         makeKinematicsResult(std::move(motion.joints), std::move(motion.trajectory), report));
     const size_t unreachable = report.value("unreachable_points", size_t{0});
@@ -87,6 +86,7 @@ DocumentMotion solveDocumentMotion(const DocumentState& snapshot, const Trajecto
     out.warnings.push_back(std::string("Kinematics failed: ") + e.what() +
                            (e.hint().empty() ? std::string() : " " + e.hint()));
   }
+  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return out;
 }
 

@@ -17,6 +17,7 @@ struct DocumentMotion {
   std::vector<std::string> warnings;  // unreachable points, collisions, missing meshes, failures
   // Every point reached and free of collisions, every axis within its speed limit.
   bool ok = false;
+  double seconds = 0.0;  // wall time of the stage (0 without a cell)
 };
 
 // Solves the robot (and positioner) motion of `plan` (part frame, with process channels) on the

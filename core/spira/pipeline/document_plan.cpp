@@ -164,22 +164,19 @@ DocumentPlan planDocument(const DocumentState& snapshot, const PluginRegistry& r
   r.setReport(Stage::Process, share(std::move(processReport)));
 
   SubProgress kinematicsProgress(progress, kPlanShare, 1.0, "kinematics");
-  const auto motionStart = std::chrono::steady_clock::now();
   DocumentMotion kinematics = solveDocumentMotion(snapshot, *r.process, request.substrateZ,
                                                   kinematicsProgress, options.resolveCollisions);
-  if (snapshot.cell)
-    plan.timings.push_back(
-        {"kinematics",
-         std::chrono::duration<double>(std::chrono::steady_clock::now() - motionStart).count()});
+  if (snapshot.cell) plan.timings.push_back({"kinematics", kinematics.seconds});
   if (kinematics.report)
-    for (const auto& [key, value] : kinematics.report->items())
-      if (key != "seconds") out.report[key] = value;  // report.json's timings_s has it as "kinematics"
+    for (const auto& [key, value] : kinematics.report->items()) out.report[key] = value;
   out.report["timings_s"] = timingsJson(plan.timings);
   out.warnings.insert(out.warnings.end(), kinematics.warnings.begin(), kinematics.warnings.end());
   out.motionOk = !snapshot.cell || kinematics.ok;
   if (kinematics.result) {
     r.setKinematics(std::move(kinematics.result));
-    r.setReport(Stage::Kinematics, std::move(kinematics.report));
+    nlohmann::json stageReport = *kinematics.report;
+    stageReport["seconds"] = kinematics.seconds;  // the stored stage keeps its own wall time
+    r.setReport(Stage::Kinematics, share(std::move(stageReport)));
   }
 
   out.output = std::move(plan);
