@@ -2,6 +2,7 @@
 
 #include "spira/base/error.h"
 #include "spira/base/number_text.h"
+#include "spira/planning/settings_sections.h"
 
 namespace spira::cli {
 
@@ -88,6 +89,17 @@ long long wholeNumberFlag(const std::string& flag, const std::string& text, long
   if (!n || *n < min || *n > max)
     throw UsageError(flag + ": '" + clippedText(text) + "' " + problem, example);
   return *n;
+}
+
+PlanFlags::PlanFlags(const PluginRegistry& registry)
+{
+  for (const SettingsSection& s : planSections()) values[std::string(s.name)];
+  std::vector<const Plugin*> plugins = registry.ofKind(PluginKind::Decomposer);
+  for (const Plugin* p : registry.ofKind(PluginKind::ClosureFinder)) plugins.push_back(p);
+  for (const Plugin* p : plugins) values[p->id()];
+  for (const SettingsSection& s : planSections())
+    targets.push_back(FlagTarget{std::string(s.name), &s.schema, &values[std::string(s.name)]});
+  for (const Plugin* p : plugins) targets.push_back(FlagTarget{p->id(), &p->schema(), &values[p->id()]});
 }
 
 }  // namespace spira::cli

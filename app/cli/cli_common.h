@@ -1,12 +1,14 @@
 #pragma once
 
 #include <filesystem>
+#include <map>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "spira/base/exit_code.h"
 #include "spira/plugin/param_cli.h"
+#include "spira/plugin/plugin_registry.h"
 
 namespace spira::cli {
 
@@ -39,6 +41,16 @@ Args splitArgs(const std::vector<std::string>& args);
 // returned. A missing, malformed or out-of-range value is a usage error, as for every other flag.
 std::vector<std::string> takeParamFlags(const std::vector<std::string>& rest,
                                         const std::vector<FlagTarget>& targets);
+
+// The flags of a plan: the settings sections' and every decomposer's and closure finder's, each
+// target writing into its own ParamSet of `values` (keyed by section name or plugin id).
+struct PlanFlags {
+  std::map<std::string, ParamSet> values;
+  std::vector<FlagTarget> targets;
+  explicit PlanFlags(const PluginRegistry& registry);
+  PlanFlags(const PlanFlags&) = delete;  // targets point into values
+  PlanFlags& operator=(const PlanFlags&) = delete;
+};
 
 // The value of a numeric flag: a finite number, or a whole number in [min, max]; anything else is a
 // usage error naming the flag, what is wrong and `example`.

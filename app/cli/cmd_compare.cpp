@@ -14,23 +14,6 @@
 namespace spira::cli {
 namespace {
 
-// The flags 'plan' takes for the plan itself: the spiral and process sections, every decomposer
-// and closure finder (each strategy reads its own).
-struct CompareFlags {
-  std::map<std::string, ParamSet> values;
-  std::vector<FlagTarget> targets;
-  explicit CompareFlags(const PluginRegistry& registry)
-  {
-    std::vector<const Plugin*> plugins = registry.ofKind(PluginKind::Decomposer);
-    for (const Plugin* p : registry.ofKind(PluginKind::ClosureFinder)) plugins.push_back(p);
-    for (const SettingsSection& s : planSections()) values[std::string(s.name)];
-    for (const Plugin* p : plugins) values[p->id()];
-    for (const SettingsSection& s : planSections())
-      targets.push_back(FlagTarget{std::string(s.name), &s.schema, &values[std::string(s.name)]});
-    for (const Plugin* p : plugins) targets.push_back(FlagTarget{p->id(), &p->schema(), &values[p->id()]});
-  }
-};
-
 void printTable(const Comparison& c, std::ostream& out)
 {
   out << std::fixed << std::setprecision(3) << "window " << c.hMin << " .. " << c.hMax << " mm (h = " << c.h
@@ -57,7 +40,7 @@ int cmdCompare(const std::vector<std::string>& argv)
 {
   const PluginRegistry& registry = builtinRegistry();
   ImporterFlags importFlags(registry);
-  CompareFlags flags(registry);
+  PlanFlags flags(registry);
   Args args = splitArgs(argv);
   std::vector<FlagTarget> targets = flags.targets;
   targets.insert(targets.end(), importFlags.targets().begin(), importFlags.targets().end());

@@ -87,7 +87,7 @@ ExportSource projectSource(const fs::path& file)
                           : file.stem().string();
   if (doc.part()) s.placement = doc.part()->T_world_part;
   // The stage reports carry the plan's key figures (revolutions, heights, length) for the header.
-  s.report = summarisePlanReport(mergedPlanReport(doc.results()), file.string() + " (the plan's report)");
+  s.report = planSummaryOf(doc.results()).value_or(PlanReportSummary{});
   if (doc.settings()) s.settings = *doc.settings();
   return s;
 }

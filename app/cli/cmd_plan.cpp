@@ -33,22 +33,6 @@ namespace fs = std::filesystem;
 namespace spira::cli {
 namespace {
 
-// Flag targets of 'plan': the spiral and process sections, every decomposer and closure finder.
-struct PlanFlags {
-  std::map<std::string, ParamSet> values;
-  std::vector<FlagTarget> targets;
-  explicit PlanFlags(const PluginRegistry& registry)
-  {
-    for (const SettingsSection& s : planSections()) values[std::string(s.name)];
-    std::vector<const Plugin*> plugins = registry.ofKind(PluginKind::Decomposer);
-    for (const Plugin* p : registry.ofKind(PluginKind::ClosureFinder)) plugins.push_back(p);
-    for (const Plugin* p : plugins) values[p->id()];
-    for (const SettingsSection& s : planSections())
-      targets.push_back(FlagTarget{std::string(s.name), &s.schema, &values[std::string(s.name)]});
-    for (const Plugin* p : plugins) targets.push_back(FlagTarget{p->id(), &p->schema(), &values[p->id()]});
-  }
-};
-
 // The part as a document holds it: placed (the mesh moved or cut), standing on the plate.
 std::shared_ptr<const Part> partOf(ImportedPart imported, const std::string& file, int lowerLoop)
 {
@@ -208,7 +192,7 @@ int cmdPlan(const std::vector<std::string>& argv)
   replaceOutputSet(outDir, OutputKind::Plan, planFiles);
   printSummary(plan, std::cout);
   if (plan.advice) std::cout << "advice: " << plan.advice->text() << "\n";
-  if (r.kinematics) printMotionSummary(report, std::cout);
+  if (r.kinematics && r.reports.kinematics) printMotionSummary(r.reports.kinematics->motion, std::cout);
 
   const bool forced = exporterValues.has("force") && exporterValues.getBool("force");
   if (exporter && !plan.feasible && !forced) {
@@ -221,7 +205,7 @@ int cmdPlan(const std::vector<std::string>& argv)
     job.prep = prep;
     job.cell = cell ? &*cell : nullptr;
     job.plannedCollision = planned.collision;  // flagged in the program, refused unless forced
-    job.header = programHeader(positional[0], cellFile, summarisePlanReport(report, "the plan's report"));
+    job.header = programHeader(positional[0], cellFile, planSummaryOf(r).value_or(PlanReportSummary{}));
     const ExportOutcome exported = exportTrajectory(registry, finalPath, job, outDir, progress);
     printExportSummary(exported, std::cout);
     report["timings_s"]["export"] = exported.seconds;

@@ -1,9 +1,12 @@
 #include "robot_output.h"
 
+#include <cmath>
 #include <cstdlib>
 #include <ctime>
 #include <filesystem>
 #include <iomanip>
+#include <limits>
+#include <optional>
 #include <ostream>
 #include <sstream>
 
@@ -53,62 +56,60 @@ std::map<std::string, std::string> programHeader(const std::string& partFile, co
 
 namespace {
 
-// An infinite value (a turn on the spot) is stored as null.
-std::string number(const nlohmann::json& v)
+// A turn on the spot needs an infinite axis speed.
+std::string number(double v)
 {
   std::ostringstream s;
   s << std::fixed << std::setprecision(3);
-  if (v.is_number())
-    s << v.get<double>();
+  if (std::isfinite(v))
+    s << v;
   else
     s << "infinite";
   return s.str();
 }
 
-void printJointSpeed(const nlohmann::json& js, std::ostream& out)
+std::string indexText(const std::optional<std::int64_t>& i)
 {
-  const size_t over = js.value("points_over_limit", size_t{0});
-  if (over == 0) return;
-  out << "joint speed: " << over
-      << " point(s) need an axis past its speed limit at the planned travel speed (" << js.value("axis", "")
-      << " at " << number(js["max_percent"]) << " % at point " << js["point"].dump() << ")";
-  if (!js.contains("slowdown")) {
+  return i ? std::to_string(*i) : std::string("null");
+}
+
+void printJointSpeed(const JointSpeedRecord& js, std::ostream& out)
+{
+  if (js.pointsOverLimit == 0) return;
+  out << "joint speed: " << js.pointsOverLimit
+      << " point(s) need an axis past its speed limit at the planned travel speed (" << js.axis << " at "
+      << number(js.maxPercent) << " % at point " << indexText(js.point) << ")";
+  if (!js.slowdown) {
     out << ": INFEASIBLE (--allow-slowdown lets the controller slow down there)\n";
     return;
   }
-  const nlohmann::json& sd = js["slowdown"];
-  out << "; the controller slows down there and the deposit thickens (" << sd.value("height_model", "")
-      << ") to " << number(sd["max_height_mm"]) << " mm at most, at " << sd.value("outside_window", size_t{0})
-      << " point(s) outside the window\n";
+  const SlowdownRecord& sd = *js.slowdown;
+  out << "; the controller slows down there and the deposit thickens (" << sd.heightModel << ") to "
+      << number(sd.maxHeight.value_or(std::numeric_limits<double>::quiet_NaN())) << " mm at most, at "
+      << sd.outsideWindow << " point(s) outside the window\n";
 }
 
 }  // namespace
 
-void printMotionSummary(const nlohmann::json& r, std::ostream& out)
+void printMotionSummary(const MotionStageReport& r, std::ostream& out)
 {
   out << std::fixed << std::setprecision(3);
-  out << "cell " << r.value("cell", "") << ": " << (r.value("reachable", false) ? "reachable" : "UNREACHABLE")
-      << " (" << r.value("unreachable_points", 0) << " point(s) out of reach or limits), configuration "
-      << r.value("configuration", "") << "\n";
-  out << "joint-limit margin " << r.value("min_joint_limit_margin_deg", 0.0) << " deg ("
-      << r.value("min_joint_limit_margin_axis", "") << "), dexterity >= " << r.value("min_dexterity", 0.0)
-      << ", joint speed <= " << 100.0 * r.value("max_joint_speed_ratio", 0.0) << " % of the limit ("
-      << r.value("max_joint_speed_axis", "") << ")\n";
-  if (r.contains("positioner_range_deg"))
-    for (const auto& [axis, range] : r["positioner_range_deg"].items())
-      out << "positioner " << axis << " " << range[0].get<double>() << " .. " << range[1].get<double>()
-          << " deg\n";
-  printJointSpeed(r.value("joint_speed", nlohmann::json::object()), out);
-  out << "torch collisions: " << r.value("collisions_detected", 0) << " detected, "
-      << r.value("collisions_resolved", 0) << " resolved by tilting, " << r.value("collisions", 0)
-      << " left\n";
-  out << "robot links: " << r.value("robot_collisions", 0) << " of " << r.value("robot_points_checked", 0)
-      << " checked points collide";
-  if (r.contains("robot_collision_links") && !r["robot_collision_links"].empty())
-    out << " (" << r["robot_collision_links"].dump() << ")";
+  out << "cell " << r.cell << ": " << (r.reachable ? "reachable" : "UNREACHABLE") << " ("
+      << r.unreachablePoints << " point(s) out of reach or limits), configuration " << r.configuration
+      << "\n";
+  out << "joint-limit margin " << r.minLimitMarginDeg << " deg (" << r.minLimitMarginAxis
+      << "), dexterity >= " << r.minDexterity << ", joint speed <= " << 100.0 * r.maxJointSpeedRatio
+      << " % of the limit (" << r.maxJointSpeedAxis << ")\n";
+  if (r.positionerRange)
+    for (const auto& [axis, range] : *r.positionerRange)
+      out << "positioner " << axis << " " << range[0] << " .. " << range[1] << " deg\n";
+  printJointSpeed(r.jointSpeed, out);
+  out << "torch collisions: " << r.collisionsDetected << " detected, " << r.collisionsResolved
+      << " resolved by tilting, " << r.collisions << " left\n";
+  out << "robot links: " << r.robotCollisions << " of " << r.robotPointsChecked << " checked points collide";
+  if (!r.robotCollisionLinks.empty()) out << " (" << nlohmann::json(r.robotCollisionLinks).dump() << ")";
   out << "\n";
-  if (r.contains("cell_warnings"))
-    for (const auto& w : r["cell_warnings"]) out << "warning: " << w.get<std::string>() << "\n";
+  for (const std::string& w : r.cellWarnings) out << "warning: " << w << "\n";
 }
 
 void printExportSummary(const ExportOutcome& e, std::ostream& out)

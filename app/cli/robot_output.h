@@ -20,7 +20,7 @@ const ExporterPlugin& exporterFor(const PluginRegistry& registry, const std::str
 std::map<std::string, std::string> programHeader(const std::string& partFile, const std::string& cellFile,
                                                  const PlanReportSummary& plan);
 
-void printMotionSummary(const nlohmann::json& motionReport, std::ostream& out);
+void printMotionSummary(const MotionStageReport& motion, std::ostream& out);
 void printExportSummary(const ExportOutcome& exported, std::ostream& out);
 
 }  // namespace spira::cli

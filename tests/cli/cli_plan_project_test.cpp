@@ -63,7 +63,7 @@ TEST(CliPlanProject, SameTrajectoryAsTheGuiPlanAndSaveStoresIt)
   EXPECT_EQ(report.at("cell"), p.state.cell->name);
   EXPECT_EQ(report.at("feasible"), gui.feasible);
   EXPECT_EQ(report.at("strategy"), "isovalue");  // the one name, as 'plan PART' writes it
-  EXPECT_EQ(report.at("n_points"), gui.results.report(Stage::Spiral)->at("n_points"));
+  EXPECT_EQ(report.at("n_points"), gui.results.reports.spiral->points);
 
   const DocumentState saved = loadProject(p.file);
   ASSERT_TRUE(saved.results.process);
@@ -110,8 +110,7 @@ TEST(CliPlanProject, PlanningThePartFileGivesThePlanOfTheProject)
   for (const char* key : {"project", "part", "deposit_summary"}) EXPECT_EQ(a.erase(key), 1u) << key;
   for (const char* key : {"cell_file", "dropped_mm"}) EXPECT_EQ(b.erase(key), 1u) << key;
   for (nlohmann::json* j : {&a, &b})
-    for (const char* key : {"timings_s", "kinematics_timings_s"})
-      EXPECT_EQ(j->erase(key), 1u) << key;
+    for (const char* key : {"timings_s", "kinematics_timings_s"}) EXPECT_EQ(j->erase(key), 1u) << key;
   EXPECT_EQ(a, b);
   EXPECT_EQ(a.at("n_points"), b.at("n_points"));
   // The spiral's report carries the window it was planned for: h = 1.9 mm +/- 10 %.

@@ -118,7 +118,7 @@ TEST_F(HostileReport, DepositCheckThatIsNotAnObjectIsRefused)
 {
   const CliRun r = exportPlan(editedPlan("deposit_check", 7));
   EXPECT_EQ(r.exitCode, 3) << r.err;
-  EXPECT_TRUE(has(r.err, "'deposit_check' should be an object, found the number 7")) << r.err;
+  EXPECT_TRUE(has(r.err, "field 'deposit_check' must be an object, found the number 7")) << r.err;
 }
 
 TEST_F(HostileReport, HugeStringIsClippedInTheMessage)
@@ -145,16 +145,19 @@ TEST_F(HostileReport, ProjectsStoredReportOfTheWrongTypeIsNamed)
 {
   Document doc;
   const auto path = std::make_shared<const Trajectory>(readTrajectoryCsv(*dir_ / "plan" / "trajectory.csv"));
-  // The spiral stage's report holds the plan's figures (report.json's top level).
-  doc.setSpiral(path, std::make_shared<const nlohmann::json>(nlohmann::json{{"path_length", "long"}}));
-  doc.setProcess(path, std::make_shared<const nlohmann::json>(nlohmann::json{{"build_time_s", 60.0}}));
+  doc.setSpiral(path, std::make_shared<const SpiralStageReport>());
+  doc.setProcess(path, std::make_shared<const ProcessStageReport>());
   const fs::path project = tmp_ / "wall.spira";
   doc.saveAs(project);
+  // The spiral stage's report holds the plan's figures (report.json's top level).
+  nlohmann::json j = projectJsonOf(readBytes(project));
+  j["results"]["reports"]["spiral"]["payload"]["path_length"] = "long";
+  writeBytes(project, projectBytesOf(j));
   const CliRun r = runCli({"export", project.string(), "--format", "krl", "-o", (tmp_ / "program").string()});
   EXPECT_EQ(r.exitCode, 3) << r.err;
-  EXPECT_TRUE(has(r.err, project.string() +
-                             " (the plan's report): field 'path_length' must be a number, found "
-                             "the string \"long\""))
+  EXPECT_TRUE(has(r.err,
+                  "wall.spira: project results spiral report: field 'path_length' must be a number, found "
+                  "the string \"long\""))
       << r.err;
 }
 

@@ -14,6 +14,7 @@
 #include "spira/base/progress.h"
 #include "spira/io/import_service.h"
 #include "spira/pipeline/export_job.h"
+#include "spira/pipeline/plan_records.h"
 #include "spira/planning/plan_files.h"
 #include "spira/planning/planner.h"
 #include "spira/plugin/plugin_registry.h"

@@ -158,15 +158,33 @@ DocumentState fullState()
   f.kind = "geodesic_distance";
   f.source = "heat method from loop 1";
   f.values = {0.0, -0.0, 0.1, 1e-300, 3.5, 7.25, std::numeric_limits<double>::infinity(), 2.0};
-  s.results.setField(std::make_shared<const FieldResult>(f));
-  s.results.setGeneratrices(std::make_shared<const Generatrices>(sampleGeneratrices()));
-  s.results.setSpiral(std::make_shared<const Trajectory>(sampleTrajectory(20)));
-  s.results.setProcess(std::make_shared<const Trajectory>(sampleTrajectory(23)));
-  s.results.setKinematics(std::make_shared<const KinematicsResult>(sampleKinematics(7)));
-  s.results.setExport(std::make_shared<const nlohmann::json>(nlohmann::json{{"files", {"a.src", "a.dat"}}}));
-  for (int i = 0; i < kStageCount; ++i)
-    s.results.setReport(stageAt(i), std::make_shared<const nlohmann::json>(nlohmann::json{
-                                        {"stage", i}, {"seconds", 0.1 * i}, {"warnings", {}}}));
+  FieldStageReport field{"geodesic_distance", {{"field", 0.25}}, Vec3(0.0, 0.0, 60.0), 61.5};
+  s.results.setField(std::make_shared<const FieldResult>(f), std::make_shared<const FieldStageReport>(field));
+  s.results.setGeneratrices(
+      std::make_shared<const Generatrices>(sampleGeneratrices()),
+      std::make_shared<const GeneratricesStageReport>(GeneratricesStageReport{2, 9.5, 10.25}));
+  SpiralStageReport spiral;
+  spiral.strategy = "geodesic";
+  spiral.points = 20;
+  spiral.hMin = 1.8;
+  spiral.hMax = 2.2;
+  spiral.warnings = {"a warning"};
+  spiral.depositCheck.flaggedPoints = {
+      {3, "jump", std::numeric_limits<double>::infinity(), Vec3(1.0, 2.0, 3.0)}};
+  s.results.setSpiral(std::make_shared<const Trajectory>(sampleTrajectory(20)),
+                      std::make_shared<const SpiralStageReport>(spiral));
+  ProcessStageReport process;
+  process.wireLength = 1234.5;
+  s.results.setProcess(std::make_shared<const Trajectory>(sampleTrajectory(23)),
+                       std::make_shared<const ProcessStageReport>(process));
+  KinematicsStageReport kinematics;
+  kinematics.motion.cell = "sample cell";
+  kinematics.motion.jointSpeed.perAxis["A1"] = {std::numeric_limits<double>::infinity(), std::nullopt};
+  kinematics.seconds = 0.5;
+  s.results.setKinematics(std::make_shared<const KinematicsResult>(sampleKinematics(7)),
+                          std::make_shared<const KinematicsStageReport>(kinematics));
+  s.results.setExport(
+      std::make_shared<const ExportStageResult>(ExportStageResult{"export.krl", {"a.src", "a.dat"}}));
   return s;
 }
 

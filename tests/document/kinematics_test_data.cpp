@@ -31,8 +31,7 @@ KinematicsResult sampleKinematics(int points)
     j.points.push_back(p);
   }
   Trajectory path = sampleTrajectory(points);
-  nlohmann::json report{{"reachable", false}, {"min_dexterity", 0.1}, {"unreachable_indices", {2}}};
-  return makeKinematicsResult(std::move(j), std::move(path), std::move(report));
+  return makeKinematicsResult(std::move(j), std::move(path));
 }
 
 }  // namespace spira::test

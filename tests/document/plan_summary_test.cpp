@@ -1,8 +1,8 @@
-// The typed summary of a planned document: the stage reports merged as report.json has them and
-// read once, so no view reads a report by key; a damaged report gives no summary instead of an
-// exception in a view.
+// The typed summary of a planned document, read from its typed stage reports, and report.json's
+// layout of those reports.
 #include <gtest/gtest.h>
 
+#include <limits>
 #include <memory>
 
 #include <nlohmann/json.hpp>
@@ -15,43 +15,47 @@
 namespace spira::test {
 namespace {
 
-std::shared_ptr<const nlohmann::json> share(nlohmann::json j)
-{
-  return std::make_shared<const nlohmann::json>(std::move(j));
-}
-
 Results plannedResults()
 {
+  SpiralStageReport spiral;
+  spiral.partType = "closed";
+  spiral.revolutions = 31;
+  spiral.collapsedRevolutions = 2;
+  spiral.points = 11160;
+  spiral.heightMin = 1.83;
+  spiral.heightMax = 2.17;
+  spiral.rampHeightMin = 1.8;
+  spiral.rampHeightMax = 2.2;
+  spiral.pathLength = 5712.5;
+  spiral.h = 2.0;
+  spiral.hMin = 1.8;
+  spiral.hMax = 2.2;
+  spiral.heightTolerance = 0.01;
+  spiral.closurePoint = Vec3(0.0, 0.0, 60.0);
+  spiral.buildTime = 1960.0;
+  spiral.feasible = false;
+  spiral.solid = SolidRecord{};
+  spiral.solid->wallThickness = {4.0, 3.5, 4.5};
+  DepositCheckRecord& check = spiral.depositCheck;
+  check.summary = "2 beads are too thin";
+  check.heightMin = 1.1;
+  check.heightMax = 2.3;
+  check.flagged = 2;
+  check.coverage = CoverageRecord{};
+  check.coverage->uncoveredFraction = 0.025;
+  check.flaggedPoints = {{7, "thin", 1.1, Vec3::Zero()},
+                         {9, "unsupported", std::numeric_limits<double>::infinity(), Vec3::Zero()}};
+  ProcessStageReport process;
+  process.withinLimits = true;
+  KinematicsStageReport kinematics;
+  kinematics.motion.cell = "KUKA KR 16-2 on a table";
+  kinematics.motion.reachable = true;
+  kinematics.seconds = 4.5;
   Results r;
-  r.setReport(
-      Stage::Spiral,
-      share({{"part_type", "closed"},
-             {"n_revolutions", 31},
-             {"collapsed_revolutions", 2},
-             {"n_points", 11160},
-             {"height_min", 1.83},
-             {"height_max", 2.17},
-             {"ramp_height_min", 1.8},
-             {"ramp_height_max", 2.2},
-             {"path_length", 5712.5},
-             {"h", 2.0},
-             {"h_min", 1.8},
-             {"h_max", 2.2},
-             {"height_tolerance_mm", 0.01},
-             {"closure_point", {0.0, 0.0, 60.0}},
-             {"feasible", false},
-             {"solid", {{"wall_thickness_mm", {{"median", 4.0}, {"thinnest", 3.5}, {"thickest", 4.5}}}}},
-             {"deposit_check",
-              {{"summary", "2 beads are too thin"},
-               {"height_min", 1.1},
-               {"height_max", 2.3},
-               {"flagged", 2},
-               {"coverage", {{"uncovered_fraction", 0.025}}},
-               {"flagged_points",
-                {{{"point", 7}, {"kind", "thin"}, {"height", 1.1}},
-                 {{"point", 9}, {"kind", "unsupported"}, {"height", nullptr}}}}}}}));
-  r.setReport(Stage::Process, share({{"build_time_s", 1960.0}, {"within_limits", true}}));
-  r.setReport(Stage::Kinematics, share({{"cell", "KUKA KR 16-2 on a table"}, {"reachable", true}}));
+  r.setSpiral(std::make_shared<const Trajectory>(), std::make_shared<const SpiralStageReport>(spiral));
+  r.setProcess(std::make_shared<const Trajectory>(), std::make_shared<const ProcessStageReport>(process));
+  r.setKinematics(std::make_shared<const KinematicsResult>(),
+                  std::make_shared<const KinematicsStageReport>(kinematics));
   return r;
 }
 
@@ -78,26 +82,51 @@ TEST(PlanSummary, ReadsEveryFigureTheViewsShowFromTheStageReports)
   ASSERT_EQ(s->flaggedPoints.size(), 2u);
   EXPECT_EQ(s->flaggedPoints[0].point, 7u);
   EXPECT_EQ(s->flaggedPoints[0].height, std::optional<double>(1.1));
-  EXPECT_FALSE(s->flaggedPoints[1].height);
+  EXPECT_FALSE(s->flaggedPoints[1].height);  // nothing below it
   EXPECT_EQ(s->buildTime, std::optional<double>(1960.0));
-  EXPECT_EQ(s->cell, "KUKA KR 16-2 on a table");  // the motion report's keys sit at the top
+  EXPECT_EQ(s->cell, "KUKA KR 16-2 on a table");
 }
 
-TEST(PlanSummary, ProcessReportGoesUnderProcessAsInReportJson)
+TEST(PlanSummary, WithoutAProcessReportThereIsNoBuildTime)
+{
+  Results r = plannedResults();
+  r.invalidateFrom(Stage::Process);
+  const std::optional<PlanReportSummary> s = planSummaryOf(r);
+  ASSERT_TRUE(s);
+  EXPECT_FALSE(s->buildTime);
+  EXPECT_EQ(s->cell, "");
+  EXPECT_FALSE(planSummaryOf(Results()));
+  EXPECT_FALSE(planWindow(Results()));
+}
+
+// report.json: the spiral's keys at the top, the process's under "process", the motion's at the
+// top with its wall time under timings_s; the stored stage's own "seconds" stays out.
+TEST(PlanSummary, MergedReportHasReportJsonsLayout)
 {
   const nlohmann::json merged = mergedPlanReport(plannedResults());
-  EXPECT_EQ(merged.at("process").at("build_time_s"), 1960.0);
-  EXPECT_FALSE(merged.contains("build_time_s"));
+  EXPECT_EQ(merged.at("build_time_s"), 1960.0);
+  EXPECT_EQ(merged.at("process").at("within_limits"), true);
+  EXPECT_FALSE(merged.at("process").contains("build_time_s"));
   EXPECT_EQ(merged.at("reachable"), true);
-}
-
-TEST(PlanSummary, NoSpiralReportOrADamagedOneGivesNoSummary)
-{
-  EXPECT_FALSE(planSummaryOf(Results()));
-  Results damaged = plannedResults();
-  damaged.setReport(Stage::Spiral, share({{"n_revolutions", "thirty"}}));
-  EXPECT_FALSE(planSummaryOf(damaged));
-  EXPECT_FALSE(planWindow(damaged));
+  EXPECT_EQ(merged.at("cell"), "KUKA KR 16-2 on a table");
+  EXPECT_EQ(merged.at("timings_s").at("kinematics"), 4.5);
+  EXPECT_FALSE(merged.contains("seconds"));
+  EXPECT_EQ(merged.at("closure_point"), nlohmann::json::array({0.0, 0.0, 60.0}));
+  EXPECT_TRUE(nlohmann::json::parse(merged.dump())
+                  .at("deposit_check")
+                  .at("flagged_points")
+                  .at(1)
+                  .at("height")
+                  .is_null());
+  // A plan folder's report.json reads back to the same summary.
+  const PlanReportSummary back = summarisePlanReport(nlohmann::json::parse(merged.dump()), "report.json");
+  const PlanReportSummary direct = *planSummaryOf(plannedResults());
+  EXPECT_EQ(back.revolutions, direct.revolutions);
+  EXPECT_EQ(back.buildTime, direct.buildTime);
+  EXPECT_EQ(back.cell, direct.cell);
+  ASSERT_EQ(back.flaggedPoints.size(), 2u);
+  EXPECT_FALSE(back.flaggedPoints[1].height);
+  EXPECT_EQ(back.window->hMax, 2.2);
 }
 
 TEST(ProgramHeader, NamesThePartTheCellTheUtcDateAndThePlan)

@@ -19,28 +19,19 @@
 namespace spira {
 namespace {
 
-// The documented frame, written independently of the implementation.
 std::string frame(std::uint32_t version, const std::string& payload, std::uint32_t crc)
 {
-  std::string out = "SPIRAPRJ";
-  for (int i = 0; i < 4; ++i) out.push_back(static_cast<char>((version >> (8 * i)) & 0xFF));
-  const std::uint64_t n = payload.size();
-  for (int i = 0; i < 8; ++i) out.push_back(static_cast<char>((n >> (8 * i)) & 0xFF));
-  out += payload;
-  for (int i = 0; i < 4; ++i) out.push_back(static_cast<char>((crc >> (8 * i)) & 0xFF));
-  return out;
+  return test::projectFrame(version, payload, crc);
 }
 
 std::string framedJson(const nlohmann::json& j)
 {
-  const auto cbor = nlohmann::json::to_cbor(j);
-  const std::string payload(cbor.begin(), cbor.end());
-  return frame(kProjectFormatVersion, payload, crc32(payload));
+  return test::projectBytesOf(j);
 }
 
 nlohmann::json payloadOf(const std::string& file)
 {
-  return nlohmann::json::from_cbor(file.substr(20, file.size() - 24));
+  return test::projectJsonOf(file);
 }
 
 std::string messageOf(std::string_view bytes)

@@ -78,7 +78,7 @@ std::shared_ptr<const KinematicsResult> syntheticKinematics(bool positioner)
     t.position = Vec3(static_cast<double>(i), 0.0, 0.0);
     path.points.push_back(t);
   }
-  return std::make_shared<const KinematicsResult>(makeKinematicsResult(std::move(j), std::move(path), {}));
+  return std::make_shared<const KinematicsResult>(makeKinematicsResult(std::move(j), std::move(path)));
 }
 
 TEST(JointChart, DrawsEveryAxisWithItsLimitsAndFlagsBadPoints)

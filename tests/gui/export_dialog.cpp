@@ -169,9 +169,12 @@ TEST(ExportRequest, WarnsAboutPointsOutsideTheWindowFromThePlan)
     p.height = h;
     t.points.push_back(p);
   }
-  r.setSpiral(std::make_shared<const Trajectory>(t));
-  r.setReport(Stage::Spiral, std::make_shared<const nlohmann::json>(nlohmann::json{
-                                 {"h", 2.0}, {"h_min", 1.8}, {"h_max", 2.2}, {"height_tolerance_mm", 0.01}}));
+  SpiralStageReport window;
+  window.h = 2.0;
+  window.hMin = 1.8;
+  window.hMax = 2.2;
+  window.heightTolerance = 0.01;
+  r.setSpiral(std::make_shared<const Trajectory>(t), std::make_shared<const SpiralStageReport>(window));
   r.setProcess(std::make_shared<const Trajectory>(t));
   const auto warnings = ui::exportWarnings(r, nullptr);
   ASSERT_EQ(warnings.size(), 1u);

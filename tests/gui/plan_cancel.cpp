@@ -210,13 +210,14 @@ TEST(PlanCancel, ContradictorySettingsFailWithTheHintAndInfeasiblePlansAreFlagge
   w.planPanel()->panel("spiral")->field("h_min")->resetButton()->click();
   ASSERT_TRUE(planAndWait(w));
   ASSERT_TRUE(doc.results().spiral) << w.lastErrorMessage().toStdString();
-  const auto& report = *doc.results().report(Stage::Spiral);
-  EXPECT_FALSE(report.value("feasible", true));
-  EXPECT_GT(report.value("violations", 0), 0);
+  ASSERT_TRUE(doc.results().reports.spiral);
+  const SpiralStageReport& report = *doc.results().reports.spiral;
+  EXPECT_FALSE(report.feasible);
+  EXPECT_GT(report.violations, 0);
   EXPECT_EQ(w.planPanel()->verdictLabel()->property("feasible"), QVariant(false));
   EXPECT_TRUE(w.planPanel()->verdictLabel()->text().contains("Infeasible plan"));
   ui::SpiralLayer& spiral = w.sceneView()->spiralLayer();
-  EXPECT_EQ(spiral.violationCount(), report.value("violations", 0LL));  // the same rule as the planner's
+  EXPECT_EQ(spiral.violationCount(), report.violations);  // the same rule as the planner's
   EXPECT_EQ(spiral.shownViolationCount(), spiral.violationCount());
   bool warned = false;
   QString advice;
@@ -235,12 +236,10 @@ TEST(PlanCancel, ContradictorySettingsFailWithTheHintAndInfeasiblePlansAreFlagge
   // The offending points are listed, each message selecting its point when clicked.
   auto* list = w.logPanel()->findChild<QListWidget*>();
   ASSERT_NE(list, nullptr);
-  const double hMin = report.value("h_min", 0.0), hMax = report.value("h_max", 0.0);
-  const double tol = report.value("height_tolerance_mm", 0.0);
+  const double hMin = report.hMin, hMax = report.hMax, tol = report.heightTolerance;
   // Two lists: the planned heights outside the window, then the points the deposit check rejects.
   std::set<long long> rejected;
-  for (const auto& f : report["deposit_check"]["flagged_points"])
-    rejected.insert(f["point"].get<long long>());
+  for (const DepositFlagRecord& f : report.depositCheck.flaggedPoints) rejected.insert(f.point);
   int listed = 0, listedRejected = 0;
   for (int row = 0; row < list->count(); ++row) {
     const QVariant v = list->item(row)->data(ui::PathInspector::kPointRole);
@@ -261,7 +260,7 @@ TEST(PlanCancel, ContradictorySettingsFailWithTheHintAndInfeasiblePlansAreFlagge
     emit list->itemClicked(list->item(row));
     EXPECT_EQ(w.pointSelection()->index(), i);
   }
-  EXPECT_EQ(listed, std::min(ui::PathInspector::kMaxListedPoints, report.value("violations", 0)));
+  EXPECT_EQ(listed, std::min<std::int64_t>(ui::PathInspector::kMaxListedPoints, report.violations));
   EXPECT_EQ(listedRejected,
             std::min<int>(ui::PathInspector::kMaxListedPoints, static_cast<int>(rejected.size())));
   EXPECT_GT(listedRejected, 0);

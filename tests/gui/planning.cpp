@@ -101,11 +101,11 @@ TEST(PlanningWorkflow, DomeFromImportToProcessChart)
   EXPECT_EQ(r.field->values.size(), vertices);
   ASSERT_TRUE(r.generatrices->hasClosurePoint);
   EXPECT_EQ(r.spiral->size(), r.process->size());
-  ASSERT_TRUE(r.report(Stage::Spiral));
-  const nlohmann::json& report = *r.report(Stage::Spiral);
-  EXPECT_TRUE(report.value("feasible", false));
-  EXPECT_DOUBLE_EQ(report.value("h_min", 0.0), 1.8);  // h = 2 mm, window +/-10 %
-  EXPECT_DOUBLE_EQ(report.value("h_max", 0.0), 2.2);
+  ASSERT_TRUE(r.reports.spiral);
+  const SpiralStageReport& report = *r.reports.spiral;
+  EXPECT_TRUE(report.feasible);
+  EXPECT_DOUBLE_EQ(report.hMin, 1.8);  // h = 2 mm, window +/-10 %
+  EXPECT_DOUBLE_EQ(report.hMax, 2.2);
   EXPECT_TRUE(logContains(w, "Planned in"));
   EXPECT_TRUE(w.planPanel()->verdictLabel()->text().contains("Feasible plan"));
   EXPECT_FALSE(w.planPanel()->progress()->isVisible());
@@ -123,7 +123,7 @@ TEST(PlanningWorkflow, DomeFromImportToProcessChart)
       << spiral.legend().title().toStdString();
   EXPECT_TRUE(spiral.legend().visible());
   // The window, with the planner's tolerance (0.5 % of h), is the colour scale.
-  const double tolerance = report.value("height_tolerance_mm", 0.0);
+  const double tolerance = report.heightTolerance;
   EXPECT_NEAR(tolerance, 0.01, 1e-12);
   EXPECT_DOUBLE_EQ(spiral.channelRange().first, 1.8 - tolerance);
   EXPECT_DOUBLE_EQ(spiral.channelRange().second, 2.2 + tolerance);
@@ -230,7 +230,7 @@ TEST(PlanningWorkflow, DomeFromImportToProcessChart)
   // The dome's spiral ends on its pole, numbered as one more revolution of a single point.
   ASSERT_TRUE(spiral.endsOnAPoint());
   const int rings = spiral.revolutionCount() - 1;
-  EXPECT_EQ(rings, report.value("n_revolutions", 0) - report.value("collapsed_revolutions", 0));
+  EXPECT_EQ(rings, report.revolutions - report.collapsedRevolutions);
   EXPECT_TRUE(display->revolutionLabel()->text().startsWith(
       QStringLiteral("Revolution %1 of %2: %3 points").arg(middle + 1).arg(rings).arg(expected)))
       << display->revolutionLabel()->text().toStdString();

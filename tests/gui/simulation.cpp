@@ -117,17 +117,17 @@ TEST(Simulation, DomeOnTheFanucPositionerCell)
   EXPECT_EQ(k.axes[6].name, "E1");
   EXPECT_TRUE(k.joints.hasPositioner);
   EXPECT_EQ(k.joints.controller, "fanuc_r30ib");
-  EXPECT_EQ(k.report.value("reachable", false),
-            k.allReachable() && k.report.value("within_cable_twist_limit", true));
+  ASSERT_TRUE(r.reports.kinematics);
+  const MotionStageReport& motion = r.reports.kinematics->motion;
+  EXPECT_EQ(motion.reachable, k.allReachable() && motion.withinCableTwistLimit);
   size_t reached = 0;
   for (const KinematicsCheck& c : k.checks) reached += c.reachable ? 1 : 0;
   std::cout << "[ measure  ] kinematics of " << k.size() << " points: " << reached << " reachable, "
-            << k.collisionCount() << " colliding, min dexterity " << k.report.value("min_dexterity", 0.0)
-            << ", min limit margin " << k.report.value("min_joint_limit_margin_deg", 0.0) << " deg, "
-            << k.report.value("seconds", 0.0) << " s\n";
+            << k.collisionCount() << " colliding, min dexterity " << motion.minDexterity
+            << ", min limit margin " << motion.minLimitMarginDeg << " deg, " << r.reports.kinematics->seconds
+            << " s\n";
   // The dome sits on the table centre with the build kept vertical: the arm reaches it all.
   EXPECT_EQ(reached, k.size());
-  ASSERT_TRUE(r.report(Stage::Kinematics));
 
   // 3. The spiral coloured by the robot's dexterity.
   ui::SpiralLayer& spiral = w.sceneView()->spiralLayer();
@@ -273,7 +273,7 @@ TEST(Simulation, BeadGrowsAndCollisionsShowWhereTheyHappen)
   joints.points.resize(7);
   joints.points[3].collision = true;
   joints.points[5].reachable = false;
-  const KinematicsResult k = makeKinematicsResult(joints, straightPath(), nlohmann::json::object());
+  const KinematicsResult k = makeKinematicsResult(joints, straightPath());
   vtkNew<vtkRenderer> renderer;
   ui::BeadLayer bead(renderer);
   const Transform placement(Eigen::Translation3d(0.0, 0.0, 5.0));
@@ -317,7 +317,7 @@ TEST(Simulation, ChunkedBeadCoversThePathLaidSoFar)
   }
   JointTrajectory joints;
   joints.points.resize(n);
-  const KinematicsResult k = makeKinematicsResult(joints, path, nlohmann::json::object());
+  const KinematicsResult k = makeKinematicsResult(joints, path);
   vtkNew<vtkRenderer> renderer;
   ui::BeadLayer bead(renderer);
   const double r = 1.5;

@@ -8,6 +8,7 @@
 
 #include <QAction>
 #include <QCheckBox>
+#include <QDir>
 #include <QDockWidget>
 #include <QLabel>
 #include <QPlainTextEdit>
@@ -257,6 +258,12 @@ TEST(Workflow, DomeWithFanucCellFromImportToExport)
   ASSERT_TRUE(written.first().at(0).toBool()) << d->summaryLabel()->text().toStdString();
   const QStringList files = written.first().at(1).toStringList();
   ASSERT_FALSE(files.isEmpty());
+  // The document's export stage lists what was written; a change of the export settings drops it.
+  ASSERT_TRUE(doc.results().exported);
+  EXPECT_EQ(doc.results().exported->exporter, "export.fanuc_tp");
+  ASSERT_EQ(doc.results().exported->files.size(), static_cast<size_t>(files.size()));
+  EXPECT_EQ(QDir::toNativeSeparators(QString::fromStdString(doc.results().exported->files.front())),
+            files.front());
   std::ifstream in(files.front().toStdString(), std::ios::binary);
   const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   const TpTarget t = arcStartTarget(text);

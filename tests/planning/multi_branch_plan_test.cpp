@@ -11,6 +11,7 @@
 #include "spira/base/units.h"
 #include "spira/mesh/mesh_primitives.h"
 #include "spira/path/spiral_builder.h"
+#include "spira/pipeline/plan_records.h"
 #include "spira/planning/plan_files.h"
 #include "spira/planning/plan_schemas.h"
 #include "spira/planning/planner.h"

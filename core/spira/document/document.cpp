@@ -73,7 +73,7 @@ void dropStaleResults(Results& now, const Results& before, Stage from)
   for (int i = stageIndex(from); i < kStageCount; ++i) {
     const Stage s = stageAt(i);
     if (resultPointer(now, s) == resultPointer(before, s)) resetResult(now, s);
-    if (now.reports[i] == before.reports[i]) now.reports[i].reset();
+    if (now.reports.identical(s, before.reports)) now.reports.reset(s);
   }
 }
 
@@ -274,55 +274,37 @@ void Document::setResults(Results results)
   changeResults([&](Results& r) { r = std::move(results); });
 }
 
-void Document::setField(std::shared_ptr<const FieldResult> r, std::shared_ptr<const nlohmann::json> report)
+void Document::setField(std::shared_ptr<const FieldResult> r, std::shared_ptr<const FieldStageReport> report)
 {
-  changeResults([&](Results& res) {
-    res.setField(std::move(r));
-    res.setReport(Stage::Field, std::move(report));
-  });
+  changeResults([&](Results& res) { res.setField(std::move(r), std::move(report)); });
 }
 
 void Document::setGeneratrices(std::shared_ptr<const Generatrices> r,
-                               std::shared_ptr<const nlohmann::json> report)
+                               std::shared_ptr<const GeneratricesStageReport> report)
 {
-  changeResults([&](Results& res) {
-    res.setGeneratrices(std::move(r));
-    res.setReport(Stage::Generatrices, std::move(report));
-  });
+  changeResults([&](Results& res) { res.setGeneratrices(std::move(r), std::move(report)); });
 }
 
-void Document::setSpiral(std::shared_ptr<const Trajectory> r, std::shared_ptr<const nlohmann::json> report)
+void Document::setSpiral(std::shared_ptr<const Trajectory> r, std::shared_ptr<const SpiralStageReport> report)
 {
-  changeResults([&](Results& res) {
-    res.setSpiral(std::move(r));
-    res.setReport(Stage::Spiral, std::move(report));
-  });
+  changeResults([&](Results& res) { res.setSpiral(std::move(r), std::move(report)); });
 }
 
-void Document::setProcess(std::shared_ptr<const Trajectory> r, std::shared_ptr<const nlohmann::json> report)
+void Document::setProcess(std::shared_ptr<const Trajectory> r,
+                          std::shared_ptr<const ProcessStageReport> report)
 {
-  changeResults([&](Results& res) {
-    res.setProcess(std::move(r));
-    res.setReport(Stage::Process, std::move(report));
-  });
+  changeResults([&](Results& res) { res.setProcess(std::move(r), std::move(report)); });
 }
 
 void Document::setKinematics(std::shared_ptr<const KinematicsResult> r,
-                             std::shared_ptr<const nlohmann::json> report)
+                             std::shared_ptr<const KinematicsStageReport> report)
 {
-  changeResults([&](Results& res) {
-    res.setKinematics(std::move(r));
-    res.setReport(Stage::Kinematics, std::move(report));
-  });
+  changeResults([&](Results& res) { res.setKinematics(std::move(r), std::move(report)); });
 }
 
-void Document::setExport(std::shared_ptr<const nlohmann::json> r,
-                         std::shared_ptr<const nlohmann::json> report)
+void Document::setExport(std::shared_ptr<const ExportStageResult> r)
 {
-  changeResults([&](Results& res) {
-    res.setExport(std::move(r));
-    res.setReport(Stage::Export, std::move(report));
-  });
+  changeResults([&](Results& res) { res.setExport(std::move(r)); });
 }
 
 void Document::invalidateFrom(Stage s)

@@ -90,14 +90,14 @@ class Document {
 
   // --- Results (not undo steps) ---
   void setResults(Results results);
-  void setField(std::shared_ptr<const FieldResult> r, std::shared_ptr<const nlohmann::json> report = {});
+  void setField(std::shared_ptr<const FieldResult> r, std::shared_ptr<const FieldStageReport> report = {});
   void setGeneratrices(std::shared_ptr<const Generatrices> r,
-                       std::shared_ptr<const nlohmann::json> report = {});
-  void setSpiral(std::shared_ptr<const Trajectory> r, std::shared_ptr<const nlohmann::json> report = {});
-  void setProcess(std::shared_ptr<const Trajectory> r, std::shared_ptr<const nlohmann::json> report = {});
+                       std::shared_ptr<const GeneratricesStageReport> report = {});
+  void setSpiral(std::shared_ptr<const Trajectory> r, std::shared_ptr<const SpiralStageReport> report = {});
+  void setProcess(std::shared_ptr<const Trajectory> r, std::shared_ptr<const ProcessStageReport> report = {});
   void setKinematics(std::shared_ptr<const KinematicsResult> r,
-                     std::shared_ptr<const nlohmann::json> report = {});
-  void setExport(std::shared_ptr<const nlohmann::json> r, std::shared_ptr<const nlohmann::json> report = {});
+                     std::shared_ptr<const KinematicsStageReport> report = {});
+  void setExport(std::shared_ptr<const ExportStageResult> r);
   void invalidateFrom(Stage s);
   void clearResults() { invalidateFrom(Stage::Field); }
 

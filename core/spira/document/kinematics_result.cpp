@@ -55,7 +55,7 @@ size_t KinematicsResult::collisionCount() const
 
 bool KinematicsResult::operator==(const KinematicsResult& o) const
 {
-  if (!sameJoints(joints, o.joints) || !(path == o.path) || checks != o.checks || report != o.report ||
+  if (!sameJoints(joints, o.joints) || !(path == o.path) || checks != o.checks ||
       axes.size() != o.axes.size())
     return false;
   for (size_t k = 0; k < axes.size(); ++k)
@@ -71,7 +71,7 @@ std::vector<double> axisValuesDeg(const KinematicsResult& r, size_t i)
   return v;
 }
 
-KinematicsResult makeKinematicsResult(JointTrajectory joints, Trajectory path, nlohmann::json report)
+KinematicsResult makeKinematicsResult(JointTrajectory joints, Trajectory path)
 {
   KinematicsResult r;
   r.axes.assign(joints.robotLimits.begin(), joints.robotLimits.end());
@@ -88,7 +88,6 @@ KinematicsResult makeKinematicsResult(JointTrajectory joints, Trajectory path, n
     r.checks.push_back(KinematicsCheck{p.reachable, p.dexterity, margin, p.collision});
   }
   r.path = std::move(path);
-  r.report = std::move(report);
   return r;
 }
 

@@ -2,8 +2,6 @@
 
 #include <vector>
 
-#include <nlohmann/json.hpp>
-
 #include "spira/path/joint_trajectory.h"
 #include "spira/path/trajectory.h"
 
@@ -22,7 +20,8 @@ struct KinematicsCheck {
 
 // The kinematics stage of a plan: the robot (and positioner) motion solved on the document's
 // cell, the per-point checks, the controller limits of every axis and the poses it was solved
-// for. Immutable once made; the document holds it by shared pointer.
+// for (its report is the stage's, StageReports::kinematics). Immutable once made; the document holds
+// it by shared pointer.
 struct KinematicsResult {
   JointTrajectory joints;
   // The trajectory the joints were solved for (part frame): the plan with the torch tilts that
@@ -32,7 +31,6 @@ struct KinematicsResult {
   // Robot axes A1..A6 / J1..J6, then the positioner axes E1, E2 when the cell has one
   // (controller degrees, degrees per second).
   std::vector<AxisLimit> axes;
-  nlohmann::json report;  // the report.json keys of the cell (pipeline/plan_motion.cpp)
 
   size_t size() const { return joints.size(); }
   // Every point reachable and free of collisions.
@@ -48,6 +46,6 @@ std::vector<double> axisValuesDeg(const KinematicsResult& r, size_t i);
 
 // Builds the result: fills `axes` from the joint trajectory's limits and the checks from its
 // points (reachable, dexterity, collision) and the distance of every axis to its limits.
-KinematicsResult makeKinematicsResult(JointTrajectory joints, Trajectory path, nlohmann::json report);
+KinematicsResult makeKinematicsResult(JointTrajectory joints, Trajectory path);
 
 }  // namespace spira

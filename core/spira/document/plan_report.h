@@ -7,6 +7,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "spira/document/stage_reports.h"
+
 namespace spira {
 
 struct Results;
@@ -29,10 +31,8 @@ struct SolidWallSummary {
   double median = 0.0, thinnest = 0.0, thickest = 0.0;
 };
 
-// What export takes from a plan's report (a plan folder's report.json, or the stage reports a
-// project stores): the names and figures for the program header and the plan's verdict. Every
-// member is optional in the report; one of the wrong type is an InputError naming the report
-// (`what`) and the key.
+// What export and the views take from a plan's reports (a plan folder's report.json, or the stage
+// reports a document holds): the names and figures for the program header and the plan's verdict.
 struct PlanReportSummary {
   std::string part;      // "part": the planned file, empty when absent
   std::string cellFile;  // "cell_file": the cell the plan was made for, empty without one
@@ -61,14 +61,20 @@ struct PlanReportSummary {
 // syntax error, the line and column.
 nlohmann::json parsePlanReport(const std::string& text, const std::string& what);
 
+// The summary of a plan folder's report.json (the stage reports merged, with the keys the CLI
+// adds). Throws InputError naming `what` and the key of a member of the wrong type.
 PlanReportSummary summarisePlanReport(const nlohmann::json& report, const std::string& what);
 
+// The summary of the stage reports: the spiral's, with the process's and the motion's when present.
+PlanReportSummary summaryOf(const SpiralStageReport& spiral, const ProcessStageReport* process,
+                            const MotionStageReport* motion);
+
 // The stage reports of a planned document in report.json's layout: the spiral's at the top, the
-// process's under "process", the robot motion's at the top. Empty without a spiral report.
+// process's under "process", the robot motion's at the top and its wall time under
+// timings_s "kinematics". Empty without a spiral report.
 nlohmann::json mergedPlanReport(const Results& results);
 
-// The summary of a planned document's reports; nullopt without a spiral report or when a report
-// cannot be read (a damaged project: the views then show no figures rather than fail).
+// The summary of a planned document's reports; nullopt without a spiral report.
 std::optional<PlanReportSummary> planSummaryOf(const Results& results);
 
 // The process window of a planned document; nullopt without one.

@@ -1,6 +1,5 @@
 #pragma once
 
-#include <array>
 #include <memory>
 #include <string>
 #include <vector>
@@ -9,6 +8,7 @@
 
 #include "spira/document/kinematics_result.h"
 #include "spira/document/stage.h"
+#include "spira/document/stage_reports.h"
 #include "spira/path/trajectory.h"
 
 namespace spira {
@@ -23,20 +23,63 @@ struct FieldResult {
   bool operator!=(const FieldResult& o) const { return !(*this == o); }
 };
 
+// What the stages of a plan reported (stage_reports.h), typed; null: none. The export stage has
+// no report: its result lists what it wrote.
+struct StageReports {
+  std::shared_ptr<const FieldStageReport> field;
+  std::shared_ptr<const GeneratricesStageReport> generatrices;
+  std::shared_ptr<const SpiralStageReport> spiral;
+  std::shared_ptr<const ProcessStageReport> process;
+  std::shared_ptr<const KinematicsStageReport> kinematics;
+
+  // Calls `f` with the member pointer of stage `s`'s report (&StageReports::spiral...) and returns
+  // true; false for the export stage, which has no report.
+  template <class F>
+  static bool visitMember(Stage s, F&& f);
+
+  bool has(Stage s) const;
+  void reset(Stage s);
+  // The same report object, or two that hold the same values.
+  bool same(Stage s, const StageReports& o) const;
+  // The same report object (or both none).
+  bool identical(Stage s, const StageReports& o) const;
+};
+
+template <class F>
+bool StageReports::visitMember(Stage s, F&& f)
+{
+  switch (s) {
+    case Stage::Field:
+      f(&StageReports::field);
+      return true;
+    case Stage::Generatrices:
+      f(&StageReports::generatrices);
+      return true;
+    case Stage::Spiral:
+      f(&StageReports::spiral);
+      return true;
+    case Stage::Process:
+      f(&StageReports::process);
+      return true;
+    case Stage::Kinematics:
+      f(&StageReports::kinematics);
+      return true;
+    case Stage::Export:
+      return false;
+  }
+  return false;
+}
+
 // The staged results of a plan. Each is an immutable value held by shared pointer (null: not
 // computed), so copying Results is cheap and an undo snapshot holds them for free.
-//
-// Kinematics is the typed robot motion (kinematics_result.h). Export is a JSON payload (written
-// files and their checksums); the project file stores it as it is.
 struct Results {
   std::shared_ptr<const FieldResult> field;
   std::shared_ptr<const Generatrices> generatrices;
   std::shared_ptr<const Trajectory> spiral;   // the continuous spiral, geometry channels
   std::shared_ptr<const Trajectory> process;  // with orientation and process channels
   std::shared_ptr<const KinematicsResult> kinematics;
-  std::shared_ptr<const nlohmann::json> exported;
-  // Per stage: what the computation reported (timings, warnings, statistics); null if none.
-  std::array<std::shared_ptr<const nlohmann::json>, kStageCount> reports;
+  std::shared_ptr<const ExportStageResult> exported;
+  StageReports reports;
 
   // Whether the stage's result is present (reports do not count).
   bool has(Stage s) const;
@@ -46,16 +89,16 @@ struct Results {
   void invalidateFrom(Stage s);
   void clear() { *this = Results(); }
 
-  // Each setter stores the result of one stage and drops every later stage, whose inputs changed.
-  void setField(std::shared_ptr<const FieldResult> r);
-  void setGeneratrices(std::shared_ptr<const Generatrices> r);
-  void setSpiral(std::shared_ptr<const Trajectory> r);
-  void setProcess(std::shared_ptr<const Trajectory> r);
-  void setKinematics(std::shared_ptr<const KinematicsResult> r);
-  void setExport(std::shared_ptr<const nlohmann::json> r);
-  // Sets the report of a stage without touching any result.
-  void setReport(Stage s, std::shared_ptr<const nlohmann::json> report);
-  const std::shared_ptr<const nlohmann::json>& report(Stage s) const { return reports[stageIndex(s)]; }
+  // Each setter stores the result of one stage with its report and drops every later stage,
+  // whose inputs changed.
+  void setField(std::shared_ptr<const FieldResult> r, std::shared_ptr<const FieldStageReport> report = {});
+  void setGeneratrices(std::shared_ptr<const Generatrices> r,
+                       std::shared_ptr<const GeneratricesStageReport> report = {});
+  void setSpiral(std::shared_ptr<const Trajectory> r, std::shared_ptr<const SpiralStageReport> report = {});
+  void setProcess(std::shared_ptr<const Trajectory> r, std::shared_ptr<const ProcessStageReport> report = {});
+  void setKinematics(std::shared_ptr<const KinematicsResult> r,
+                     std::shared_ptr<const KinematicsStageReport> report = {});
+  void setExport(std::shared_ptr<const ExportStageResult> r);
 
   // Stages whose result or report differs (by pointer, then by value).
   StageMask differingStages(const Results& o) const;

@@ -1,9 +1,11 @@
 #include <algorithm>
+#include <type_traits>
 
 #include <nlohmann/json.hpp>
 
 #include "spira/base/error.h"
 #include "spira/document/results.h"
+#include "spira/document/stage_report_codec.h"
 #include "spira/io/json_codec.h"
 
 namespace spira {
@@ -276,8 +278,7 @@ nlohmann::json kinematicsToJson(const KinematicsResult& k)
             {"reachable", codec::intsToBlob(reachable)},
             {"collision", codec::intsToBlob(collision)},
             {"dexterity", codec::doublesToBlob(dexterity)},
-            {"limit_margin_deg", codec::doublesToBlob(margin)}}},
-          {"report", {{"payload", k.report}}}};
+            {"limit_margin_deg", codec::doublesToBlob(margin)}}}};
 }
 
 KinematicsResult kinematicsFromJson(const nlohmann::json& j, const std::string& what)
@@ -297,7 +298,6 @@ KinematicsResult kinematicsFromJson(const nlohmann::json& j, const std::string& 
   const auto margin = sized(codec::decodeDoubleBlob(codec::field(c, "limit_margin_deg", cw), cw), n, cw);
   for (size_t i = 0; i < n; ++i)
     k.checks.push_back(KinematicsCheck{reachable[i] != 0, dexterity[i], margin[i], collision[i] != 0});
-  k.report = codec::field(codec::field(j, "report", what), "payload", what + " report");
   return k;
 }
 
@@ -322,10 +322,12 @@ nlohmann::json resultsToJson(const Results& r)
   j["kinematics"] = orNull(r.kinematics, kinematicsToJson);
   // Payloads are wrapped so that a stored JSON null stays distinct from "not computed".
   const auto wrap = [](const nlohmann::json& p) { return nlohmann::json{{"payload", p}}; };
-  j["export"] = orNull(r.exported, wrap);
+  j["export"] = r.exported ? wrap(reportToJson(*r.exported)) : nlohmann::json(nullptr);
   nlohmann::json reports = nlohmann::json::object();
   for (int i = 0; i < kStageCount; ++i)
-    if (r.reports[i]) reports[stageName(stageAt(i))] = wrap(*r.reports[i]);
+    StageReports::visitMember(stageAt(i), [&](auto slot) {
+      if (const auto& report = r.reports.*slot) reports[stageName(stageAt(i))] = wrap(reportToJson(*report));
+    });
   j["reports"] = std::move(reports);
   return j;
 }
@@ -339,8 +341,13 @@ Results resultsFromJson(const nlohmann::json& j)
     const auto& v = codec::field(j, key, what);
     return v.is_null() ? nullptr : &v;
   };
-  const auto payload = [&](const nlohmann::json& v, const std::string& name) {
-    return std::make_shared<const nlohmann::json>(codec::field(v, "payload", what + " " + name));
+  const auto payload = [&](const nlohmann::json& v, const std::string& name) -> const nlohmann::json& {
+    return codec::field(v, "payload", what + " " + name);
+  };
+  const auto read = [&](const nlohmann::json& v, const std::string& name, auto& slot) {
+    using Report = std::remove_const_t<typename std::decay_t<decltype(slot)>::element_type>;
+    slot = std::make_shared<const Report>(
+        reportFromJson<Report>(payload(v, name), what + " " + name, "the project file is damaged"));
   };
   if (const auto* f = member("field")) {
     FieldResult fr;
@@ -357,14 +364,16 @@ Results resultsFromJson(const nlohmann::json& j)
     r.process = std::make_shared<const Trajectory>(trajectoryFromJson(*t, what + " process"));
   if (const auto* k = member("kinematics"); k && schema >= 2)
     r.kinematics = std::make_shared<const KinematicsResult>(kinematicsFromJson(*k, what + " kinematics"));
-  if (const auto* e = member("export")) r.exported = payload(*e, "export");
+  if (const auto* e = member("export")) read(*e, "export", r.exported);
   const auto& reports = codec::field(j, "reports", what);
   if (!reports.is_object())
     throw InputError(what + ": 'reports' is not an object", "the project file is damaged");
   for (auto it = reports.begin(); it != reports.end(); ++it) {
     const auto stage = parseStageName(it.key());
     // A report of a stage this version does not know is dropped: reports are informative only.
-    if (stage) r.reports[stageIndex(*stage)] = payload(it.value(), it.key() + " report");
+    if (!stage) continue;
+    StageReports::visitMember(*stage,
+                              [&](auto slot) { read(it.value(), it.key() + " report", r.reports.*slot); });
   }
   return r;
 }

@@ -3,8 +3,6 @@
 #include <chrono>
 #include <cstdio>
 
-#include <nlohmann/json.hpp>
-
 #include "spira/base/error.h"
 #include "spira/base/progress.h"
 #include "spira/pipeline/plan_motion.h"
@@ -46,27 +44,27 @@ DocumentMotion solveDocumentMotion(const DocumentState& snapshot, const Trajecto
     }
     PlanMotion motion = solvePlanMotion(cell, frame.identity() ? plan : buildPlan, settings, progress);
     if (!frame.identity()) frame.toPart(motion.trajectory);
-    nlohmann::json report = motion.report;
+    const MotionStageReport& report = motion.report;
     auto result = std::make_shared<const KinematicsResult>(
-        makeKinematicsResult(std::move(motion.joints), std::move(motion.trajectory), report));
-    const size_t unreachable = report.value("unreachable_points", size_t{0});
+        makeKinematicsResult(std::move(motion.joints), std::move(motion.trajectory)));
+    const auto unreachable = report.unreachablePoints;
     if (unreachable > 0)
       out.warnings.push_back("The robot cannot reach " + std::to_string(unreachable) + " of " +
                              std::to_string(result->size()) +
                              " points (shown in red). Move the part closer to the robot or change the cell.");
-    if (!report.value("within_cable_twist_limit", true))
+    if (!report.withinCableTwistLimit)
       out.warnings.push_back(
           "The torch cable twists beyond the cell's limit; enable the spin optimisation or "
           "change the part's placement.");
     if (!motion.withinJointSpeeds) {
-      const nlohmann::json& speed = report["joint_speed"];
-      if (speed.value("allow_slowdown", false))
+      const JointSpeedRecord& speed = report.jointSpeed;
+      if (speed.allowSlowdown)
         out.warnings.push_back(
             "Where the axes cannot keep up with the travel speed the controller slows down, "
             "and the deposit thickens beyond the window at " +
             std::to_string(motion.slowdown.outsideWindow) + " point(s).");
       else
-        out.warnings.push_back("Axis " + speed.value("axis", std::string()) +
+        out.warnings.push_back("Axis " + speed.axis +
                                " would pass its speed limit at the planned travel speed. Let the controller "
                                "slow down (Process, Limits) or plan a slower process.");
     }
@@ -76,9 +74,9 @@ DocumentMotion solveDocumentMotion(const DocumentState& snapshot, const Trajecto
     if (motion.robotCollisions > 0)
       out.warnings.push_back("A robot link hits the part, table or positioner at " +
                              std::to_string(motion.robotCollisions) + " checked point(s).");
-    for (const auto& w : report.value("cell_warnings", std::vector<std::string>{})) out.warnings.push_back(w);
+    for (const std::string& w : report.cellWarnings) out.warnings.push_back(w);
     out.ok = motion.ok();
-    out.report = std::make_shared<const nlohmann::json>(std::move(report));
+    out.report = std::make_shared<const MotionStageReport>(std::move(motion.report));
     out.result = std::move(result);
   } catch (const Cancelled&) {
     throw;

@@ -13,7 +13,7 @@ class Progress;
 // What the kinematics stage of a document's plan hands back (no Document is touched: worker threads run it).
 struct DocumentMotion {
   std::shared_ptr<const KinematicsResult> result;  // null: no cell, or the stage failed
-  std::shared_ptr<const nlohmann::json> report;
+  std::shared_ptr<const MotionStageReport> report;
   std::vector<std::string> warnings;  // unreachable points, collisions, missing meshes, failures
   // Every point reached and free of collisions, every axis within its speed limit.
   bool ok = false;

@@ -11,6 +11,7 @@
 #include "spira/document/invalidation.h"
 #include "spira/mesh/mesh_report.h"
 #include "spira/pipeline/document_motion.h"
+#include "spira/pipeline/plan_records.h"
 #include "spira/planning/placement_frame.h"
 #include "spira/planning/plan_advice.h"
 #include "spira/planning/plan_files.h"
@@ -23,18 +24,6 @@ namespace spira {
 namespace {
 
 constexpr double kPlanShare = 0.8;  // of the job's progress: planPart(); the rest is the kinematics
-
-std::shared_ptr<const nlohmann::json> share(nlohmann::json j)
-{
-  return std::make_shared<const nlohmann::json>(std::move(j));
-}
-
-nlohmann::json timingsJson(const StageTimings& timings)
-{
-  nlohmann::json t = nlohmann::json::object();
-  for (const auto& [stage, seconds] : timings) t[stage] = seconds;
-  return t;
-}
 
 std::string summaryLine(const PlanOutput& plan)
 {
@@ -121,10 +110,6 @@ DocumentPlan planDocument(const DocumentState& snapshot, const PluginRegistry& r
   out.windowViolations = plan.spiral.report.violations.size();
   out.limitViolations = plan.process.violations.size();
 
-  nlohmann::json full = planReportJson(plan, settings.decomposerId);
-  out.report = full;
-  if (out.advice) out.report["advice"] = adviceJson(*out.advice);
-
   Results& r = out.results;
   auto field = std::make_shared<FieldResult>();
   field->kind = plan.fieldKind;
@@ -132,53 +117,40 @@ DocumentPlan planDocument(const DocumentState& snapshot, const PluginRegistry& r
                                   : "harmonic field, 0 on the base edge and 1 on the upper edge";
   // A solid's field lives on its mid-surface, whose vertices are not the part's: not drawn.
   if (!plan.solid) field->values = std::move(plan.field);
-  r.setField(std::move(field));
-  nlohmann::json fieldReport{{"kind", plan.fieldKind}, {"timings_s", timingsJson(plan.timings)}};
-  if (plan.hasClosure) {
-    fieldReport["closure_point"] = {plan.closure.point.x(), plan.closure.point.y(), plan.closure.point.z()};
-    fieldReport["closure_distance"] = plan.closure.distance;
-  }
-  r.setReport(Stage::Field, share(std::move(fieldReport)));
+  r.setField(std::move(field), std::make_shared<const FieldStageReport>(fieldStageReport(plan)));
 
+  // The reports count the generatrices, which move into the results next.
+  auto generatricesReport = std::make_shared<const GeneratricesStageReport>(generatricesStageReport(plan));
+  auto spiralReport =
+      std::make_shared<const SpiralStageReport>(spiralStageReport(plan, settings.decomposerId));
   Generatrices lines = std::move(plan.generatrices);
   if (plan.hasClosure && !lines.hasClosurePoint) {
     lines.hasClosurePoint = true;
     lines.closurePoint = plan.closure.point;
   }
-  r.setGeneratrices(std::make_shared<const Generatrices>(std::move(lines)));
-  r.setReport(Stage::Generatrices, share({{"n_generatrices", full["n_generatrices"]},
-                                          {"generatrix_length_min", full["generatrix_length_min"]},
-                                          {"generatrix_length_max", full["generatrix_length_max"]}}));
+  r.setGeneratrices(std::make_shared<const Generatrices>(std::move(lines)), std::move(generatricesReport));
 
   // The spiral stage holds geometry and heights only: its speeds belong to the process stage,
   // which process edits drop on their own.
   auto processed = std::make_shared<const Trajectory>(std::move(plan.spiral.trajectory));
   auto geometry = std::make_shared<Trajectory>(*processed);
   for (TrajectoryPoint& p : geometry->points) p.travelSpeed = p.wireFeed = 0.0;
-  r.setSpiral(std::move(geometry));
-  nlohmann::json processReport = full["process"];
-  processReport["build_time_s"] = plan.process.buildTime;
-  full.erase("process");
-  r.setReport(Stage::Spiral, share(std::move(full)));
-  r.setProcess(std::move(processed));
-  r.setReport(Stage::Process, share(std::move(processReport)));
+  r.setSpiral(std::move(geometry), std::move(spiralReport));
+  r.setProcess(std::move(processed),
+               std::make_shared<const ProcessStageReport>(processStageReport(plan.process)));
 
   SubProgress kinematicsProgress(progress, kPlanShare, 1.0, "kinematics");
   DocumentMotion kinematics = solveDocumentMotion(snapshot, *r.process, request.substrateZ,
                                                   kinematicsProgress, options.resolveCollisions);
-  if (snapshot.cell) plan.timings.push_back({"kinematics", kinematics.seconds});
-  if (kinematics.report)
-    for (const auto& [key, value] : kinematics.report->items()) out.report[key] = value;
-  out.report["timings_s"] = timingsJson(plan.timings);
   out.warnings.insert(out.warnings.end(), kinematics.warnings.begin(), kinematics.warnings.end());
   out.motionOk = !snapshot.cell || kinematics.ok;
-  if (kinematics.result) {
-    r.setKinematics(std::move(kinematics.result));
-    nlohmann::json stageReport = *kinematics.report;
-    stageReport["seconds"] = kinematics.seconds;  // the stored stage keeps its own wall time
-    r.setReport(Stage::Kinematics, share(std::move(stageReport)));
-  }
+  if (kinematics.result)
+    r.setKinematics(std::move(kinematics.result),
+                    std::make_shared<const KinematicsStageReport>(
+                        KinematicsStageReport{*kinematics.report, kinematics.seconds}));
 
+  out.report = mergedPlanReport(r);
+  if (out.advice) out.report["advice"] = adviceJson(*out.advice);
   out.output = std::move(plan);
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return out;

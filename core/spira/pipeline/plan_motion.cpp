@@ -27,10 +27,11 @@ TorchParams torchOf(const ToolRecord& tool)
   return t;
 }
 
-nlohmann::json firstIndices(const std::vector<size_t>& indices)
+std::vector<std::int64_t> firstIndices(const std::vector<size_t>& indices)
 {
-  nlohmann::json a = nlohmann::json::array();
-  for (size_t k = 0; k < std::min(indices.size(), kListedIndices); ++k) a.push_back(indices[k]);
+  std::vector<std::int64_t> a;
+  for (size_t k = 0; k < std::min(indices.size(), kListedIndices); ++k)
+    a.push_back(static_cast<std::int64_t>(indices[k]));
   return a;
 }
 
@@ -69,40 +70,35 @@ LinkCheck checkRobotLinks(const RobotCell& cell, const JointPathSetup& setup, co
   return out;
 }
 
-nlohmann::json indexOrNull(size_t i)
+std::optional<std::int64_t> indexOrNone(size_t i)
 {
-  return i == MotionReport::kNone ? nlohmann::json(nullptr) : nlohmann::json(i);
+  if (i == MotionReport::kNone) return std::nullopt;
+  return static_cast<std::int64_t>(i);
 }
 
-// A number, or null where it is not finite (a turn on the spot needs an infinite speed).
-nlohmann::json finiteOrNull(double v)
+SlowdownRecord slowdownRecord(const SlowdownReport& s, const DepositWindow& window)
 {
-  return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
-}
-
-nlohmann::json slowdownJson(const SlowdownReport& s, const DepositWindow& window)
-{
-  nlohmann::json points = nlohmann::json::array();
+  SlowdownRecord r;
+  r.heightModel = s.model;
+  r.window = {window.hMin - window.tolerance, window.hMax + window.tolerance};
+  r.pointsSlowed = static_cast<std::int64_t>(s.points.size());
+  r.outsideWindow = static_cast<std::int64_t>(s.outsideWindow);
+  r.maxFactor = s.maxFactor;
+  if (!s.points.empty()) {
+    r.maxFactorPoint = static_cast<std::int64_t>(s.maxFactorPoint);
+    r.maxHeight = s.maxSlowedHeight;
+    r.maxHeightPoint = static_cast<std::int64_t>(s.maxSlowedHeightPoint);
+  }
   for (const SlowedPoint& p : s.points)
-    points.push_back(
-        {p.point, finiteOrNull(p.factor), p.plannedHeight, finiteOrNull(p.slowedHeight), p.fits});
-  return {{"height_model", s.model},
-          {"window_mm", {window.hMin - window.tolerance, window.hMax + window.tolerance}},
-          {"points_slowed", s.points.size()},
-          {"outside_window", s.outsideWindow},
-          {"max_factor", finiteOrNull(s.maxFactor)},
-          {"max_factor_point", s.points.empty() ? nlohmann::json(nullptr) : nlohmann::json(s.maxFactorPoint)},
-          {"max_height_mm", s.points.empty() ? nlohmann::json(nullptr) : finiteOrNull(s.maxSlowedHeight)},
-          {"max_height_point",
-           s.points.empty() ? nlohmann::json(nullptr) : nlohmann::json(s.maxSlowedHeightPoint)},
-          {"columns", {"index", "factor", "height_mm", "slowed_height_mm", "fits"}},
-          {"points", points}};
+    r.points.push_back(
+        {static_cast<std::int64_t>(p.point), p.factor, p.plannedHeight, p.slowedHeight, p.fits});
+  return r;
 }
 
 // Each positioner axis's [min, max] over the path: the rotary axis's winding (positioner_path.h).
-nlohmann::json positionerRangeJson(const JointTrajectory& joints)
+std::map<std::string, std::array<double, 2>> positionerRange(const JointTrajectory& joints)
 {
-  nlohmann::json out = nlohmann::json::object();
+  std::map<std::string, std::array<double, 2>> out;
   for (size_t k = 0; k < 2; ++k) {
     double lo = std::numeric_limits<double>::infinity(), hi = -lo;
     for (const JointPoint& p : joints.points) {
@@ -115,24 +111,24 @@ nlohmann::json positionerRangeJson(const JointTrajectory& joints)
 }
 
 // Which axes pass their speed limit, where and by how much, and what slowing down would do.
-nlohmann::json jointSpeedJson(const MotionReport& m, const PlanMotion& out, const MotionSettings& settings)
+JointSpeedRecord jointSpeedRecord(const MotionReport& m, const PlanMotion& out,
+                                  const MotionSettings& settings)
 {
   std::vector<size_t> over;
   for (size_t i = 0; i < m.speedRatio.size(); ++i)
     if (m.speedRatio[i] > 1.0) over.push_back(i);
-  nlohmann::json axes = nlohmann::json::object();
+  JointSpeedRecord j;
   for (const MotionReport::AxisSpeed& a : m.axisSpeeds)
-    axes[a.axis] = {{"max_percent", finiteOrNull(100.0 * a.maxRatio)}, {"point", indexOrNull(a.point)}};
-  nlohmann::json j = {{"within_limits", over.empty()},
-                      {"allow_slowdown", settings.process.allowSlowdown},
-                      {"ok", out.withinJointSpeeds},
-                      {"max_percent", finiteOrNull(100.0 * m.maxSpeedRatio)},
-                      {"axis", m.maxSpeedRatioAxis},
-                      {"point", indexOrNull(m.maxSpeedRatioPoint)},
-                      {"points_over_limit", over.size()},
-                      {"over_limit_indices", firstIndices(over)},
-                      {"per_axis", axes}};
-  if (settings.process.allowSlowdown) j["slowdown"] = slowdownJson(out.slowdown, settings.window);
+    j.perAxis[a.axis] = {100.0 * a.maxRatio, indexOrNone(a.point)};
+  j.withinLimits = over.empty();
+  j.allowSlowdown = settings.process.allowSlowdown;
+  j.ok = out.withinJointSpeeds;
+  j.maxPercent = 100.0 * m.maxSpeedRatio;
+  j.axis = m.maxSpeedRatioAxis;
+  j.point = indexOrNone(m.maxSpeedRatioPoint);
+  j.pointsOverLimit = static_cast<std::int64_t>(over.size());
+  j.overLimitIndices = firstIndices(over);
+  if (settings.process.allowSlowdown) j.slowdown = slowdownRecord(out.slowdown, settings.window);
   return j;
 }
 
@@ -170,7 +166,7 @@ PlanMotion solvePlanMotion(const RobotCell& cell, const Trajectory& plan, const 
     return std::chrono::duration<double>(Clock::now() - from).count();
   };
   auto lap = Clock::now();
-  nlohmann::json timings;
+  SecondsPerStep timings;
   SubProgress collisionProgress(progress, 0.0, 0.4, "torch collisions");
   CollisionResolution resolution =
       resolveTorchCollisions(plan, checker, ResolveSettings{}, collisionProgress);
@@ -213,49 +209,48 @@ PlanMotion solvePlanMotion(const RobotCell& cell, const Trajectory& plan, const 
     out.slowdown = slowdownDeposit(out.trajectory, m.speedRatio, settings.process, settings.window);
   out.withinJointSpeeds = m.maxSpeedRatio <= 1.0 || (settings.process.allowSlowdown && out.slowdown.fits());
 
-  nlohmann::json& r = out.report;
-  r["cell"] = cell.record().name;
-  r["controller"] = out.joints.controller;
-  r["reachable"] = out.reachable;
-  r["unreachable_points"] = unreachable.size();
-  r["unreachable_indices"] = firstIndices(unreachable);
+  MotionStageReport& r = out.report;
+  r.cell = cell.record().name;
+  r.controller = out.joints.controller;
+  r.reachable = out.reachable;
+  r.unreachablePoints = static_cast<std::int64_t>(unreachable.size());
+  r.unreachableIndices = firstIndices(unreachable);
   // One label per sub-path, in build order (one for a single spiral).
-  std::string configurations;
   for (size_t k = 0; k < setups.size(); ++k)
-    configurations +=
+    r.configuration +=
         (k ? ", " : "") + (setups[k].configuration ? setups[k].configuration->label() : std::string());
-  r["configuration"] = configurations;
-  r["min_joint_limit_margin_deg"] = std::isfinite(m.minLimitMarginDeg) ? m.minLimitMarginDeg : 0.0;
-  r["min_joint_limit_margin_axis"] = m.minLimitMarginAxis;
-  r["min_joint_limit_margin_point"] = indexOrNull(m.minLimitMarginPoint);
-  r["min_dexterity"] = m.minDexterity;
-  r["min_dexterity_point"] = indexOrNull(m.minDexterityPoint);
-  r["max_joint_speed_ratio"] = m.maxSpeedRatio;
-  r["max_joint_speed_axis"] = m.maxSpeedRatioAxis;
-  r["max_joint_speed_point"] = indexOrNull(m.maxSpeedRatioPoint);
-  r["joint_speed"] = jointSpeedJson(m, out, settings);
-  if (out.joints.hasPositioner) r["positioner_range_deg"] = positionerRangeJson(out.joints);
-  r["max_cable_twist_deg"] = m.maxCableTwistDeg;
-  r["cable_twist_limit_deg"] = cell.record().cableTwistLimitDeg;
-  r["within_cable_twist_limit"] = m.withinCableTwistLimit;
-  r["collisions"] = unresolved.size();
-  r["collision_indices"] = firstIndices(unresolved);
-  r["collisions_detected"] = colliding.size();
-  r["collisions_resolved"] = settings.resolveCollisions ? colliding.size() - unresolved.size() : 0;
-  r["robot_collisions"] = links.points.size();
-  r["robot_collision_indices"] = firstIndices(links.points);
-  r["robot_collision_links"] = links.links;
-  r["robot_points_checked"] = links.checked;
-  r["cell_warnings"] = links.warnings;
-  r["optimisation"] = {{"enabled", settings.optimiseSpin},
-                       {"optimised", m.optimised},
-                       {"objective_before", m.objectiveConstant},
-                       {"penalty_before", m.penaltyConstant},
-                       {"objective_after", m.objectiveResult},
-                       {"penalty_after", m.penaltyResult},
-                       {"layers", m.layers.size()},
-                       {"poses_solved", m.posesSolved}};
-  r["kinematics_timings_s"] = timings;
+  r.minLimitMarginDeg = std::isfinite(m.minLimitMarginDeg) ? m.minLimitMarginDeg : 0.0;
+  r.minLimitMarginAxis = m.minLimitMarginAxis;
+  r.minLimitMarginPoint = indexOrNone(m.minLimitMarginPoint);
+  r.minDexterity = m.minDexterity;
+  r.minDexterityPoint = indexOrNone(m.minDexterityPoint);
+  r.maxJointSpeedRatio = m.maxSpeedRatio;
+  r.maxJointSpeedAxis = m.maxSpeedRatioAxis;
+  r.maxJointSpeedPoint = indexOrNone(m.maxSpeedRatioPoint);
+  r.jointSpeed = jointSpeedRecord(m, out, settings);
+  if (out.joints.hasPositioner) r.positionerRange = positionerRange(out.joints);
+  r.maxCableTwistDeg = m.maxCableTwistDeg;
+  r.cableTwistLimitDeg = cell.record().cableTwistLimitDeg;
+  r.withinCableTwistLimit = m.withinCableTwistLimit;
+  r.collisions = static_cast<std::int64_t>(unresolved.size());
+  r.collisionIndices = firstIndices(unresolved);
+  r.collisionsDetected = static_cast<std::int64_t>(colliding.size());
+  r.collisionsResolved =
+      settings.resolveCollisions ? static_cast<std::int64_t>(colliding.size() - unresolved.size()) : 0;
+  r.robotCollisions = static_cast<std::int64_t>(links.points.size());
+  r.robotCollisionIndices = firstIndices(links.points);
+  r.robotCollisionLinks = links.links;
+  r.robotPointsChecked = static_cast<std::int64_t>(links.checked);
+  r.cellWarnings = links.warnings;
+  r.optimisation = {settings.optimiseSpin,
+                    m.optimised,
+                    m.objectiveConstant,
+                    m.penaltyConstant,
+                    m.objectiveResult,
+                    m.penaltyResult,
+                    static_cast<std::int64_t>(m.layers.size()),
+                    static_cast<std::int64_t>(m.posesSolved)};
+  r.timings = timings;
   return out;
 }
 

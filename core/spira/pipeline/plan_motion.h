@@ -1,8 +1,7 @@
 #pragma once
 
-#include <nlohmann/json.hpp>
-
 #include "spira/base/progress.h"
+#include "spira/document/stage_reports.h"
 #include "spira/mesh/triangle_mesh.h"
 #include "spira/motion/motion_params.h"
 #include "spira/motion/slowdown_deposit.h"
@@ -54,7 +53,7 @@ struct PlanMotion {
   // slow down (settings.process.allowSlowdown) and the thicker deposit still fits the window.
   bool withinJointSpeeds = true;
   SlowdownReport slowdown;  // the points slowed down (filled when slowing down is allowed)
-  nlohmann::json report;    // the report.json keys of the cell (see plan_motion.cpp)
+  MotionStageReport report;
   bool ok() const
   {
     return reachable && unresolvedCollisions == 0 && robotCollisions == 0 && withinJointSpeeds;

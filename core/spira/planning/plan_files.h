@@ -18,10 +18,6 @@ namespace spira {
 // Numbers are written in the shortest form that reads back to the same double.
 std::string trajectoryCsv(const Trajectory& trajectory);
 
-// The plan report (report.json): the summary keys of the CLI contract plus details, "n_paths" and
-// one summary per sub-path under "paths" (and "branching" for a multi-branch part).
-nlohmann::json planReportJson(const PlanOutput& plan, const std::string& strategy);
-
 // report.json's "advice" of an infeasible plan.
 nlohmann::json adviceJson(const PlanAdvice& advice);
 

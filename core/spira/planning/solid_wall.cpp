@@ -4,8 +4,6 @@
 #include <iomanip>
 #include <sstream>
 
-#include <nlohmann/json.hpp>
-
 #include "spira/base/error.h"
 
 namespace spira {
@@ -109,20 +107,6 @@ std::string SolidWall::summary() const
     << thickness.thinnest << " .. " << thickness.thickest << " mm), bead width " << beadWidth
     << " mm: planned on its mid-surface";
   return s.str();
-}
-
-nlohmann::json SolidWall::toJson() const
-{
-  return {
-      {"kind", "thin_walled_solid"},
-      {"planned_on", "mid_surface"},
-      {"wall_thickness_mm",
-       {{"median", thickness.median}, {"thinnest", thickness.thinnest}, {"thickest", thickness.thickest}}},
-      {"wall_area_fraction", wallAreaFraction},
-      {"bead_width_mm", beadWidth},
-      {"solid_faces", solidFaces},
-      {"mid_surface_faces", midSurface ? midSurface->faceCount() : 0},
-      {"warnings", warnings}};
 }
 
 }  // namespace spira

@@ -4,8 +4,6 @@
 #include <string>
 #include <vector>
 
-#include <nlohmann/json_fwd.hpp>
-
 #include "spira/mesh/mesh_report.h"
 #include "spira/mesh/thin_wall.h"
 
@@ -23,7 +21,6 @@ struct SolidWall {
   // "thin-walled solid: wall 2.00 mm thick (1.90 .. 2.10 mm), bead width 5.20 mm: planned on its
   // mid-surface"
   std::string summary() const;
-  nlohmann::json toJson() const;
 };
 
 // The bead lays a wall about one bead width wide: a wall thicker than this many bead widths

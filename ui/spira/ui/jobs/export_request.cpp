@@ -7,8 +7,6 @@
 
 #include <QTemporaryDir>
 
-#include <nlohmann/json.hpp>
-
 #include "spira/base/error.h"
 #include "spira/pipeline/document_plan.h"
 #include "spira/pipeline/planned_path.h"
@@ -19,19 +17,6 @@
 namespace spira::ui {
 
 namespace {
-
-// The motion report's number, 0 when the key is missing or not a number.
-double number(const nlohmann::json& j, const char* key)
-{
-  const auto it = j.is_object() ? j.find(key) : j.end();
-  return it != j.end() && it->is_number() ? it->get<double>() : 0.0;
-}
-
-std::string text(const nlohmann::json& j, const char* key)
-{
-  const auto it = j.is_object() ? j.find(key) : j.end();
-  return it != j.end() && it->is_string() ? it->get<std::string>() : std::string();
-}
 
 PreviewFile readHead(const std::filesystem::path& file, size_t lines)
 {
@@ -133,11 +118,11 @@ std::vector<std::string> exportWarnings(const Results& results, const ExportPrev
                     " planned point(s) are out of the robot's reach or joint limits.");
     if (collisions > 0)
       out.push_back(std::to_string(collisions) + " planned point(s) put the torch in collision.");
-    const nlohmann::json& report = k->report;
-    const double speed = number(report, "max_joint_speed_ratio");
+    const double speed =
+        results.reports.kinematics ? results.reports.kinematics->motion.maxJointSpeedRatio : 0.0;
     if (speed > 1.0) {
       s << std::fixed << std::setprecision(0) << "A joint would have to turn at " << 100.0 * speed
-        << " % of its speed limit (" << text(report, "max_joint_speed_axis")
+        << " % of its speed limit (" << results.reports.kinematics->motion.maxJointSpeedAxis
         << "): the robot will slow the path down.";
       out.push_back(s.str());
     }

@@ -150,7 +150,9 @@ void fillResults(QTreeWidget* tree, const Document& doc)
   addRow(top, QObject::tr("Spiral"), r.spiral ? trajectoryText(r.spiral) : missing);
   addRow(top, QObject::tr("Process"), r.process ? trajectoryText(r.process) : missing);
   addRow(top, QObject::tr("Kinematics"), r.kinematics ? QObject::tr("computed") : missing);
-  addRow(top, QObject::tr("Export"), r.exported ? QObject::tr("written") : missing);
+  addRow(top, QObject::tr("Export"),
+         r.exported ? QObject::tr("%n file(s) written", "", static_cast<int>(r.exported->files.size()))
+                    : missing);
 }
 
 }  // namespace

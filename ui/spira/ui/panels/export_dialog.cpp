@@ -462,6 +462,10 @@ void ExportDialog::finishExport(const TaskOutcome& outcome, const std::shared_pt
   // The values written with are the document's from now on (one undo step, only when they changed).
   if (doc_.settings()->section(exporterId).values() != params.values())
     doc_.setPluginParams(exporterId, params, "Change export settings");
+  // The export stage of the document: what was written, until the plan or these settings change.
+  ExportStageResult written{exporterId, {}};
+  for (const auto& f : result->result.files) written.files.push_back(f.string());
+  doc_.setExport(std::make_shared<const ExportStageResult>(std::move(written)));
   QStringList files;
   for (const auto& f : result->result.files) files << QDir::toNativeSeparators(fromStd(f.string()));
   QStringList names;
