@@ -179,9 +179,9 @@ LevelSpan spanLevels(const TriangleMesh& mesh, const std::vector<double>& field,
 // runs into a free edge.
 std::vector<IsoLevel> singleLoopLevels(const TriangleMesh& mesh, const std::vector<double>& field,
                                        const LevelSpan& span, const BoundaryLoop& lower, bool open,
-                                       double spacing, std::vector<std::string>& warnings, Progress& progress)
+                                       double spacing, double meanEdge, std::vector<std::string>& warnings,
+                                       Progress& progress)
 {
-  const double meanEdge = mesh.meanEdgeLength();
   SubProgress extractProgress(progress, 0.0, 0.6, "iso-contours");
   std::vector<IsoLevel> levels = extractIsoContours(mesh, field, span.values, &extractProgress);
   progress.report(0.6, "iso-contours");
@@ -296,11 +296,12 @@ IsoDecomposition decomposeByIsoValues(const TriangleMesh& mesh, const std::vecto
   const size_t n = options.pointsPerContour;
   requireUsableInput(mesh, field, lower, n);
   IsoDecomposition out;
-  const double spacing = options.levelSpacing > 0 ? options.levelSpacing : mesh.meanEdgeLength();
+  const double meanEdge = mesh.meanEdgeLength();
+  const double spacing = options.levelSpacing > 0 ? options.levelSpacing : meanEdge;
   out.levelSpacing = spacing;
   const LevelSpan span = spanLevels(mesh, field, lower, upper, spacing, options.maxLevels, out.warnings);
   std::vector<IsoLevel> levels =
-      singleLoopLevels(mesh, field, span, lower, upper != nullptr, spacing, out.warnings, progress);
+      singleLoopLevels(mesh, field, span, lower, upper != nullptr, spacing, meanEdge, out.warnings, progress);
   out.contours = resampleContours(mesh, std::move(levels), span, lower, upper, n, progress);
   progress.report(0.75, "resampling");
   linkGeneratrices(mesh, span.topVertex, upper != nullptr, closurePoint, n, out);
