@@ -7,6 +7,7 @@
 
 #include "guide_trace.h"
 #include "spira/base/error.h"
+#include "spira/base/golden_section.h"
 
 namespace spira::geodesic {
 
@@ -183,26 +184,8 @@ bool GeneratrixSolver::chooseUpperEnd(const SubmeshGeodesics& geo, const Corrido
       const double d = geo.distance(pointOnEdge(mesh_, f, best, nb, t));
       return d >= 0.0 ? d : std::numeric_limits<double>::infinity();
     };
-    const double g = 0.5 * (std::sqrt(5.0) - 1.0);
-    double a = 0.0, b = 1.0;
-    double c = b - g * (b - a), d = a + g * (b - a);
-    double fc = distanceAt(c), fd = distanceAt(d);
-    for (int k = 0; k < kGoldenSteps; ++k) {
-      if (fc < fd) {
-        b = d;
-        d = c;
-        fd = fc;
-        c = b - g * (b - a);
-        fc = distanceAt(c);
-      } else {
-        a = c;
-        c = d;
-        fc = fd;
-        d = a + g * (b - a);
-        fd = distanceAt(d);
-      }
-    }
-    const double t = 0.5 * (a + b);
+    // Ties move the bracket up, as this search always has: results stay the same.
+    const double t = goldenSectionMinimum(distanceAt, 0.0, 1.0, {kGoldenSteps, 0.0, GoldenTie::KeepUpper});
     const double dt = distanceAt(t);
     if (dt < bestDistance) {
       bestDistance = dt;

@@ -141,6 +141,151 @@ class MeetingNeighboursCheck {
   size_t checked_ = 0;  // pairs [0, checked_) passed
 };
 
+// The target the generatrices run to (the upper edge, or the closure point and its nearest
+// vertex) and the vertices the guide field is the distance from.
+GeodesicTarget findTarget(const GeodesicMesh& gm, const SurfaceLocator& locator, HeatDistanceSolver& heat,
+                          const BoundaryLoop& lower, const BoundaryLoop* upper,
+                          const std::optional<Vec3>& closurePoint, const std::vector<double>* baseDistance,
+                          std::vector<int>& guideSources, Progress& progress)
+{
+  const TriangleMesh& mesh = gm.mesh();
+  GeodesicTarget target;
+  if (upper) {
+    target.upper = upper;
+    target.upperIndex.assign(mesh.vertexCount(), -1);
+    target.upperVertex.assign(mesh.vertexCount(), 0);
+    for (size_t i = 0; i < upper->vertices.size(); ++i) {
+      target.upperIndex[size_t(upper->vertices[i])] = int(i);
+      target.upperVertex[size_t(upper->vertices[i])] = 1;
+    }
+    guideSources = upper->vertices;
+  } else {
+    SubProgress closureProgress(progress, 0.1, 0.15, "closure point");
+    target.closure = findClosure(gm, locator, heat, lower, closurePoint, baseDistance, closureProgress);
+    const Face& cf = mesh.faces[size_t(target.closure.face)];
+    int k = 0;
+    for (int j = 1; j < 3; ++j)
+      if (target.closure.bary[j] > target.closure.bary[k]) k = j;
+    target.closureVertex = cf[size_t(k)];
+    guideSources = {target.closureVertex};
+  }
+  return target;
+}
+
+void requireBasesReachTarget(const TriangleMesh& mesh, const std::vector<BasePoint>& bases,
+                             const std::vector<double>& guide, bool open)
+{
+  for (const BasePoint& b : bases)
+    for (int v : mesh.faces[size_t(b.point.face)])
+      if (!std::isfinite(guide[size_t(v)])) {
+        std::ostringstream where;
+        where.precision(4);
+        where << "(" << b.point.position.x() << ", " << b.point.position.y() << ", " << b.point.position.z()
+              << ")";
+        throw InputError("no path on the surface joins the base point at " + where.str() + " to the " +
+                             (open ? "upper edge" : "closure point"),
+                         "the part must be one connected surface from its lower edge to its top: check the "
+                         "mesh for gaps or separate pieces");
+      }
+}
+
+// The exact geodesics, in parallel: each thread keeps its own band scratch, each search its own
+// shortest-path tree over the shared, read-only mesh. Batch by batch, so that meeting neighbours
+// refuse the part early.
+std::vector<SolvedGeneratrix> solveGeneratrices(const GeodesicMesh& gm, const std::vector<double>& guide,
+                                                const GeodesicTarget& target,
+                                                const std::vector<BasePoint>& bases,
+                                                const GeodesicOptions& options, Progress& progress)
+{
+  const size_t n = bases.size();
+  const GeneratrixSolver solver(gm, guide, target);
+  tbb::enumerable_thread_specific<Corridor> bands([&gm] { return Corridor(gm); });
+  std::vector<SolvedGeneratrix> solved(n);
+  MeetingNeighboursCheck meeting(bases, options,
+                                 target.open() ? std::nullopt : std::optional<Vec3>(target.closure.position));
+  for (size_t begin = 0; begin < n; begin += kBatch) {
+    const size_t end = std::min(n, begin + kBatch);
+    tbb::parallel_for(begin, end, [&](size_t i) {
+      progress.checkCancel();
+      solved[i] = solver.solve(bases[i].point, bands.local(), progress);
+    });
+    progress.checkCancel();
+    meeting.add(solved, begin, end);
+    progress.report(0.2 + 0.65 * double(end) / double(n), "geodesics");
+  }
+  return solved;
+}
+
+// The searches' figures into `stats`; returns the mean exact length.
+double recordSearches(const std::vector<SolvedGeneratrix>& solved, GeodesicStats& stats)
+{
+  const size_t n = solved.size();
+  stats.geodesics = n;
+  double bandFaces = 0.0, meanLength = 0.0;
+  for (const SolvedGeneratrix& s : solved) {
+    stats.untraced += s.traced ? 0 : 1;
+    stats.widened += s.rings > 1 || s.rings < 0 ? 1 : 0;
+    stats.wholeMesh += s.rings < 0 ? 1 : 0;
+    bandFaces += double(s.bandFaces);
+    meanLength += s.path.length;
+  }
+  stats.meanBandFaces = bandFaces / double(n);
+  return meanLength / double(n);
+}
+
+// One point count for all: the spacing asked for along the mean generatrix.
+std::vector<GeneratrixLine> resampleLines(const GeodesicMesh& gm, const std::vector<SolvedGeneratrix>& solved,
+                                          const std::vector<BasePoint>& bases, size_t samples)
+{
+  std::vector<GeneratrixLine> lines(solved.size());
+  tbb::parallel_for(size_t(0), solved.size(), [&](size_t i) {
+    lines[i] = resampleLine(lineFromPath(gm, solved[i], bases[i]), samples);
+  });
+  return lines;
+}
+
+void warnAboutBaseAndCoverage(size_t ambiguous, size_t n, const CoverageResult& coverage,
+                              const GeodesicOptions& options, std::vector<std::string>& warnings)
+{
+  if (ambiguous)
+    warnings.push_back("the lower edge is not star-shaped about its centroid: at " +
+                       std::to_string(ambiguous) + " of " + std::to_string(n) +
+                       " angles the vertical half-plane crosses it several times and the outermost crossing "
+                       "was used; the generatrices there may start out of order");
+  if (coverage.fillIns)
+    warnings.push_back("coverage (thesis Eq. 3.9): " + std::to_string(coverage.fillIns) +
+                       " fill-in generatrices were inserted in " + std::to_string(coverage.rounds) +
+                       " round(s) where neighbouring geodesics left the surface uncovered by more than " +
+                       significantText(options.coverageTolerance, 3) + " mm");
+  if (!coverage.converged)
+    warnings.push_back("coverage error " + significantText(coverage.maxError, 3) +
+                       " mm remains between generatrices " + std::to_string(coverage.worstPair) + " and " +
+                       std::to_string((coverage.worstPair + 1) % coverage.lines.size()) + " (tolerance " +
+                       significantText(options.coverageTolerance, 3) +
+                       " mm): raise --points-per-rev or --fill-rounds, or use --strategy isovalue");
+}
+
+void storeLines(CoverageResult& coverage, const GeodesicTarget& target, GeodesicDecomposition& out)
+{
+  Generatrices& g = out.generatrices;
+  const size_t count = coverage.lines.size();
+  g.lines.resize(count);
+  g.normals.resize(count);
+  out.fillIn.resize(count);
+  out.exactLengths.resize(count);
+  for (size_t i = 0; i < count; ++i) {
+    GeneratrixLine& l = coverage.lines[i];
+    out.fillIn[i] = l.fillIn;
+    out.exactLengths[i] = l.fillIn ? l.length() : l.exactLength;
+    g.lines[i] = std::move(l.points);
+    g.normals[i] = std::move(l.normals);
+  }
+  if (!target.open()) {
+    g.hasClosurePoint = true;
+    g.closurePoint = target.closure.position;
+  }
+}
+
 }  // namespace
 
 GeodesicDecomposition decomposeByGeodesics(const TriangleMesh& mesh, const BoundaryLoop& lower,
@@ -164,93 +309,34 @@ GeodesicDecomposition decomposeByGeodesics(const TriangleMesh& mesh, const Bound
   const SurfaceLocator locator(mesh);
   SubProgress setupProgress(progress, 0.0, 0.1, "guide field");
   HeatDistanceSolver heat(mesh, HeatDistanceOptions{}, setupProgress);
-  GeodesicTarget target;
   std::vector<int> guideSources;
-  if (upper) {
-    target.upper = upper;
-    target.upperIndex.assign(mesh.vertexCount(), -1);
-    target.upperVertex.assign(mesh.vertexCount(), 0);
-    for (size_t i = 0; i < upper->vertices.size(); ++i) {
-      target.upperIndex[size_t(upper->vertices[i])] = int(i);
-      target.upperVertex[size_t(upper->vertices[i])] = 1;
-    }
-    guideSources = upper->vertices;
-  } else {
-    SubProgress closureProgress(progress, 0.1, 0.15, "closure point");
-    target.closure = findClosure(gm, locator, heat, lower, closurePoint, baseDistance, closureProgress);
-    const Face& cf = mesh.faces[size_t(target.closure.face)];
-    int k = 0;
-    for (int j = 1; j < 3; ++j)
-      if (target.closure.bary[j] > target.closure.bary[k]) k = j;
-    target.closureVertex = cf[size_t(k)];
-    guideSources = {target.closureVertex};
-  }
+  const GeodesicTarget target =
+      findTarget(gm, locator, heat, lower, upper, closurePoint, baseDistance, guideSources, progress);
   SubProgress guideProgress(progress, 0.15, 0.2, "guide field");
   const std::vector<double> guide = heat.compute(guideSources, guideProgress);
 
   size_t ambiguous = 0;
   const std::vector<BasePoint> bases = ring.discretise(n, &ambiguous);
-  for (const BasePoint& b : bases)
-    for (int v : mesh.faces[size_t(b.point.face)])
-      if (!std::isfinite(guide[size_t(v)])) {
-        std::ostringstream where;
-        where.precision(4);
-        where << "(" << b.point.position.x() << ", " << b.point.position.y() << ", " << b.point.position.z()
-              << ")";
-        throw InputError("no path on the surface joins the base point at " + where.str() + " to the " +
-                             (upper ? "upper edge" : "closure point"),
-                         "the part must be one connected surface from its lower edge to its top: check the "
-                         "mesh for gaps or separate pieces");
-      }
+  requireBasesReachTarget(mesh, bases, guide, upper != nullptr);
   // Eq. 3.6 from bounds on the lengths: parts the window cannot hold are refused before the
   // exact searches, which cost by far the most.
   requireLengthsFitWindow(boundGeneratrixLengths(gm, bases, target), bases, options.window, upper != nullptr);
   stats.guideSeconds = secondsSince(t0);
   progress.report(0.2, "geodesics");
 
-  // The exact geodesics, in parallel: each thread keeps its own band scratch, each search its own
-  // shortest-path tree over the shared, read-only mesh.
   t0 = std::chrono::steady_clock::now();
-  const GeneratrixSolver solver(gm, guide, target);
-  tbb::enumerable_thread_specific<Corridor> bands([&gm] { return Corridor(gm); });
-  std::vector<SolvedGeneratrix> solved(n);
-  MeetingNeighboursCheck meeting(bases, options,
-                                 upper ? std::nullopt : std::optional<Vec3>(target.closure.position));
-  for (size_t begin = 0; begin < n; begin += kBatch) {
-    const size_t end = std::min(n, begin + kBatch);
-    tbb::parallel_for(begin, end, [&](size_t i) {
-      progress.checkCancel();
-      solved[i] = solver.solve(bases[i].point, bands.local(), progress);
-    });
-    progress.checkCancel();
-    meeting.add(solved, begin, end);
-    progress.report(0.2 + 0.65 * double(end) / double(n), "geodesics");
-  }
-  stats.geodesics = n;
-  double bandFaces = 0.0, meanLength = 0.0;
-  for (const SolvedGeneratrix& s : solved) {
-    stats.untraced += s.traced ? 0 : 1;
-    stats.widened += s.rings > 1 || s.rings < 0 ? 1 : 0;
-    stats.wholeMesh += s.rings < 0 ? 1 : 0;
-    bandFaces += double(s.bandFaces);
-    meanLength += s.path.length;
-  }
-  stats.meanBandFaces = bandFaces / double(n);
-  meanLength /= double(n);
+  std::vector<SolvedGeneratrix> solved = solveGeneratrices(gm, guide, target, bases, options, progress);
+  const double meanLength = recordSearches(solved, stats);
   stats.pathSeconds = secondsSince(t0);
   std::vector<LengthBounds> exact(n);
   for (size_t i = 0; i < n; ++i) exact[i] = {solved[i].path.length, solved[i].path.length};
   requireLengthsFitWindow(exact, bases, options.window, upper != nullptr);
 
-  // One point count for all: the spacing asked for along the mean generatrix.
   t0 = std::chrono::steady_clock::now();
   const double spacing = options.pointSpacing > 0.0 ? options.pointSpacing : gm.meanEdgeLength();
   const double steps = spacing > 0.0 ? std::round(meanLength / spacing) : 2.0;
   const size_t samples = size_t(std::clamp(steps, 2.0, 100000.0)) + 1;
-  std::vector<GeneratrixLine> lines(n);
-  tbb::parallel_for(size_t(0), n, [&](size_t i) {
-    lines[i] = resampleLine(lineFromPath(gm, solved[i], bases[i]), samples);
-  });
+  std::vector<GeneratrixLine> lines = resampleLines(gm, solved, bases, samples);
   solved.clear();
 
   FillInContext context{gm, locator, ring, upper, std::nullopt, samples};
@@ -264,41 +350,8 @@ GeodesicDecomposition decomposeByGeodesics(const TriangleMesh& mesh, const Bound
   stats.coverageError = coverage.maxError;
   stats.coverageSeconds = secondsSince(t0);
 
-  if (ambiguous)
-    out.warnings.push_back(
-        "the lower edge is not star-shaped about its centroid: at " + std::to_string(ambiguous) + " of " +
-        std::to_string(n) +
-        " angles the vertical half-plane crosses it several times and the outermost crossing "
-        "was used; the generatrices there may start out of order");
-  if (coverage.fillIns)
-    out.warnings.push_back("coverage (thesis Eq. 3.9): " + std::to_string(coverage.fillIns) +
-                           " fill-in generatrices were inserted in " + std::to_string(coverage.rounds) +
-                           " round(s) where neighbouring geodesics left the surface uncovered by more than " +
-                           significantText(options.coverageTolerance, 3) + " mm");
-  if (!coverage.converged)
-    out.warnings.push_back("coverage error " + significantText(coverage.maxError, 3) +
-                           " mm remains between generatrices " + std::to_string(coverage.worstPair) +
-                           " and " + std::to_string((coverage.worstPair + 1) % coverage.lines.size()) +
-                           " (tolerance " + significantText(options.coverageTolerance, 3) +
-                           " mm): raise --points-per-rev or --fill-rounds, or use --strategy isovalue");
-
-  Generatrices& g = out.generatrices;
-  const size_t count = coverage.lines.size();
-  g.lines.resize(count);
-  g.normals.resize(count);
-  out.fillIn.resize(count);
-  out.exactLengths.resize(count);
-  for (size_t i = 0; i < count; ++i) {
-    GeneratrixLine& l = coverage.lines[i];
-    out.fillIn[i] = l.fillIn;
-    out.exactLengths[i] = l.fillIn ? l.length() : l.exactLength;
-    g.lines[i] = std::move(l.points);
-    g.normals[i] = std::move(l.normals);
-  }
-  if (!upper) {
-    g.hasClosurePoint = true;
-    g.closurePoint = target.closure.position;
-  }
+  warnAboutBaseAndCoverage(ambiguous, n, coverage, options, out.warnings);
+  storeLines(coverage, target, out);
   progress.report(1.0, "generatrices");
   return out;
 }

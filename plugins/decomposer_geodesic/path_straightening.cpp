@@ -4,6 +4,7 @@
 #include <optional>
 #include <vector>
 
+#include "spira/base/golden_section.h"
 #include "strip_unfolding.h"
 
 namespace spira::geodesic {
@@ -30,26 +31,7 @@ double bestCrossing(const Vec3& a, const Vec3& b, const Vec3& p, const Vec3& q)
     const Vec3 x = (1.0 - t) * p + t * q;
     return (a - x).norm() + (x - b).norm();
   };
-  const double g = 0.5 * (std::sqrt(5.0) - 1.0);
-  double lo = 0.0, hi = 1.0;
-  double x1 = hi - g * (hi - lo), x2 = lo + g * (hi - lo);
-  double f1 = f(x1), f2 = f(x2);
-  for (int it = 0; it < 80 && hi - lo > 1e-14; ++it) {
-    if (f1 <= f2) {
-      hi = x2;
-      x2 = x1;
-      f2 = f1;
-      x1 = hi - g * (hi - lo);
-      f1 = f(x1);
-    } else {
-      lo = x1;
-      x1 = x2;
-      f1 = f2;
-      x2 = lo + g * (hi - lo);
-      f2 = f(x2);
-    }
-  }
-  const double t = 0.5 * (lo + hi);
+  const double t = goldenSectionMinimum(f, 0.0, 1.0, {80, 1e-14, GoldenTie::KeepLower});
   // The ends themselves: golden section never evaluates them.
   if (f(0.0) <= f(t)) return f(1.0) < f(0.0) ? 1.0 : 0.0;
   return f(1.0) < f(t) ? 1.0 : t;

@@ -4,6 +4,7 @@
 #include <cctype>
 #include <fstream>
 #include <functional>
+#include <iterator>
 #include <optional>
 #include <regex>
 #include <sstream>
@@ -114,15 +115,68 @@ bool isPluginRegistryHeader(const std::string& header)
   return fs::path(header).filename() == "builtin_plugins.h";
 }
 
+// The words of the first call `name(...)` in a CMake file, comments dropped, and its line.
+std::pair<int, std::vector<std::string>> firstCall(const fs::path& cmakeLists, const std::string& name)
+{
+  std::ifstream in(cmakeLists);
+  if (!in) throw std::runtime_error("cannot read " + cmakeLists.string());
+  std::string text;
+  int line = 0, first = 0;
+  std::string call;
+  bool inside = false;
+  while (std::getline(in, text)) {
+    ++line;
+    text = text.substr(0, text.find('#'));
+    if (!inside) {
+      const size_t start = text.find(name + "(");
+      if (start == std::string::npos) continue;
+      inside = true;
+      first = line;
+      text = text.substr(start + name.size() + 1);
+    }
+    const size_t close = text.find(')');
+    call += " " + text.substr(0, close);
+    if (close != std::string::npos) break;
+  }
+  if (!inside) throw std::runtime_error(cmakeLists.string() + " has no " + name + "() call");
+  std::istringstream words(call);
+  std::vector<std::string> out;
+  for (std::string word; words >> word;) out.push_back(word);
+  return {first, out};
+}
+
+// A quoted include resolved as the compiler would: next to the including file first.
+std::optional<fs::path> besideFile(const fs::path& file, const Include& inc)
+{
+  if (inc.angled) return std::nullopt;
+  const fs::path beside = (file.parent_path() / inc.header).lexically_normal();
+  if (fs::exists(beside)) return beside;
+  return std::nullopt;
+}
+
+bool isUnder(const fs::path& path, const fs::path& dir)
+{
+  const fs::path rel = path.lexically_relative(dir);
+  return !rel.empty() && *rel.begin() != "..";
+}
+
 class Checker {
  public:
-  explicit Checker(fs::path root) : root_(std::move(root)), plugins_(pluginNames(root_)) {}
+  // The root is normalised so that the paths includes resolve to compare with the ones listed.
+  explicit Checker(const fs::path& root)
+      : root_((fs::absolute(root) / "").lexically_normal().parent_path()), plugins_(pluginNames(root_))
+  {
+    for (const std::string& p : plugins_)
+      declarations_[p] = readPluginDeclaration(root_ / "plugins" / p / "CMakeLists.txt");
+  }
 
   std::vector<Violation> run()
   {
     checkCore();
     checkUi();
     checkPlugins();
+    checkPluginClients();
+    checkExamplePlugins();
     return std::move(out_);
   }
 
@@ -221,24 +275,103 @@ class Checker {
                      ": the ui never includes plugin files (app/ passes the registry in)");
   }
 
+  // The plugin and the header inside its folder that an include names, if it names one: a quoted
+  // include next to the file, or "<plugin>/..." through the plugins folder.
+  std::optional<std::pair<std::string, std::string>> pluginHeaderOf(const fs::path& file,
+                                                                    const Include& inc) const
+  {
+    if (const auto beside = besideFile(file, inc)) {
+      const fs::path rel = beside->lexically_relative(root_ / "plugins");
+      if (rel.empty() || *rel.begin() == ".." || std::distance(rel.begin(), rel.end()) < 2)
+        return std::nullopt;
+      const std::string plugin = rel.begin()->string();
+      const fs::path inside = rel.lexically_relative(plugin);
+      if (!plugins_.count(plugin) || *inside.begin() == "tests") return std::nullopt;
+      return std::make_pair(plugin, inside.generic_string());
+    }
+    const auto plugin = pluginOf(inc.header, plugins_);
+    if (!plugin) return std::nullopt;
+    return std::make_pair(*plugin, inc.header.substr(inc.header.find(*plugin + "/") + plugin->size() + 1));
+  }
+
   void checkPlugins()
   {
-    for (const std::string& plugin : plugins_)
-      for (const fs::path& file : sourcesUnder(root_ / "plugins" / plugin))
+    const fs::path coreCMake = root_ / "core" / "CMakeLists.txt";
+    const std::set<std::string> sdk = readSdkAreas(coreCMake);
+    for (const std::string& plugin : plugins_) {
+      const fs::path dir = root_ / "plugins" / plugin;
+      const PluginDeclaration& declared = declarations_.at(plugin);
+      std::set<std::string> usedAreas;
+      for (const fs::path& file : sourcesUnder(dir)) {
+        const bool test = isUnder(file, dir / "tests");
         for (const Include& inc : includesOf(file)) {
-          const auto other = pluginOf(inc.header, plugins_);
-          if (other && *other != plugin)
+          const auto header = pluginHeaderOf(file, inc);
+          if (header && header->first != plugin) {
             report(file, inc.line,
-                   "plugin " + plugin + " includes " + inc.header + " of plugin " + *other +
+                   "plugin " + plugin + " includes " + inc.header + " of plugin " + header->first +
                        ": plugins reach each other only through the registry");
-          else if (startsWith(inc.header, "spira/ui/"))
+          } else if (header && test && !declared.publicHeaders.count(header->second)) {
+            report(file, inc.line,
+                   "the tests of plugin " + plugin + " include " + inc.header + ", which is not one of its " +
+                       "PUBLIC_HEADERS");
+          } else if (startsWith(inc.header, "spira/ui/")) {
             report(file, inc.line,
                    "plugin " + plugin + " includes " + inc.header + ": plugins never use the ui");
+          } else if (const auto area = coreAreaOf(inc.header); area && !test) {
+            usedAreas.insert(*area);
+            if (!sdk.count(*area) && !declared.areas.count(*area))
+              report(file, inc.line,
+                     "plugin " + plugin + " includes " + inc.header +
+                         " but neither spira_sdk nor its AREAS " + "list " + *area);
+          }
         }
+      }
+      const fs::path cmake = dir / "CMakeLists.txt";
+      for (const std::string& area : declared.areas) {
+        if (sdk.count(area))
+          report(cmake, declared.line,
+                 "plugin " + plugin + " lists " + area + " in AREAS, which spira_sdk brings");
+        else if (!usedAreas.count(area))
+          report(cmake, declared.line,
+                 "plugin " + plugin + " lists " + area + " in AREAS but includes none of its headers");
+      }
+    }
+  }
+
+  // Code outside the plugins (ui and core are held to "no plugin at all" above) uses their
+  // public headers only.
+  void checkPluginClients()
+  {
+    for (const char* top : {"tests", "bench", "app", "examples", "fuzz"})
+      for (const fs::path& file : sourcesUnder(root_ / top)) {
+        if (isUnder(file, root_ / "tests" / "architecture" / "fixtures")) continue;
+        for (const Include& inc : includesOf(file)) {
+          const auto header = pluginHeaderOf(file, inc);
+          if (header && !declarations_.at(header->first).publicHeaders.count(header->second))
+            report(file, inc.line,
+                   "includes " + inc.header + " of plugin " + header->first + ", which is not one of its " +
+                       "PUBLIC_HEADERS");
+        }
+      }
+  }
+
+  // The worked example is what a third party builds against the SDK alone.
+  void checkExamplePlugins()
+  {
+    const std::set<std::string> sdk = readSdkAreas(root_ / "core" / "CMakeLists.txt");
+    for (const fs::path& file : sourcesUnder(root_ / "examples" / "plugin_sdk")) {
+      const std::string name = file.filename().string();
+      if (name.size() > 9 && name.compare(name.size() - 9, 9, "_test.cpp") == 0) continue;
+      for (const Include& inc : includesOf(file))
+        if (const auto area = coreAreaOf(inc.header); area && !sdk.count(*area))
+          report(file, inc.line,
+                 "the example plugins include " + inc.header + ", which spira_sdk does not bring");
+    }
   }
 
   fs::path root_;
   std::set<std::string> plugins_;
+  std::map<std::string, PluginDeclaration> declarations_;
   std::vector<Violation> out_;
 };
 
@@ -282,6 +415,41 @@ std::map<std::string, CoreArea> readCoreAreas(const fs::path& cmakeLists)
   }
   if (areas.empty()) throw std::runtime_error(cmakeLists.string() + " has no spira_core_area() call");
   return areas;
+}
+
+std::set<std::string> readSdkAreas(const fs::path& cmakeLists)
+{
+  std::ifstream in(cmakeLists);
+  if (!in) throw std::runtime_error("cannot read " + cmakeLists.string());
+  std::set<std::string> areas;
+  std::stringstream text;
+  text << in.rdbuf();
+  const std::string all = text.str();
+  const size_t at = all.find("target_link_libraries(spira_sdk INTERFACE");
+  if (at == std::string::npos)
+    throw std::runtime_error(cmakeLists.string() + " has no target_link_libraries(spira_sdk INTERFACE ...)");
+  std::istringstream words(all.substr(at, all.find(')', at) - at));
+  for (std::string word; words >> word;)
+    if (startsWith(word, "spira_") && word != "spira_sdk") areas.insert(word.substr(6));
+  return areas;
+}
+
+PluginDeclaration readPluginDeclaration(const fs::path& cmakeLists)
+{
+  const auto [line, words] = firstCall(cmakeLists, "spira_add_plugin");
+  PluginDeclaration out;
+  out.line = line;
+  static const std::set<std::string> keywords = {"NAME", "SOURCES", "AREAS", "LIBRARIES", "PUBLIC_HEADERS"};
+  std::string keyword;
+  for (const std::string& word : words) {
+    if (keywords.count(word))
+      keyword = word;
+    else if (keyword == "AREAS")
+      out.areas.insert(word);
+    else if (keyword == "PUBLIC_HEADERS")
+      out.publicHeaders.insert(word);
+  }
+  return out;
 }
 
 std::vector<Violation> checkTree(const fs::path& root)

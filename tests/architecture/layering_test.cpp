@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -40,9 +41,23 @@ TEST(Layering, EveryCrossingOfTheFixtureIsReportedWithItsFileAndLine)
       "core/spira/path/path.h:4: core includes spira/ui/scene_view.h: the core never includes ui, app or "
       "plugin "
       "files",
+      "examples/plugin_sdk/my_plugin.cpp:2: the example plugins include spira/path/path.h, which spira_sdk "
+      "does not bring",
+      "plugins/alpha/CMakeLists.txt:1: plugin alpha lists kinematics in AREAS but includes none of its "
+      "headers",
+      "plugins/alpha/CMakeLists.txt:1: plugin alpha lists mesh in AREAS, which spira_sdk brings",
       "plugins/alpha/alpha.cpp:2: plugin alpha includes beta/beta.h of plugin beta: plugins reach each other "
       "only "
       "through the registry",
+      "plugins/alpha/alpha.cpp:3: plugin alpha includes spira/path/path.h but neither spira_sdk nor its "
+      "AREAS "
+      "list path",
+      "plugins/alpha/tests/alpha_test.cpp:2: the tests of plugin alpha include ../alpha_internal.h, which is "
+      "not one of its PUBLIC_HEADERS",
+      "plugins/alpha/tests/alpha_test.cpp:3: plugin alpha includes beta/beta.h of plugin beta: plugins reach "
+      "each other only through the registry",
+      "tests/geometry/geometry_test.cpp:2: includes alpha/alpha_internal.h of plugin alpha, which is not one "
+      "of its PUBLIC_HEADERS",
       "ui/spira/ui/window.cpp:2: ui includes builtin_plugins.h: the ui never includes plugin files (app/ "
       "passes "
       "the registry in)",
@@ -61,6 +76,18 @@ TEST(Layering, CoreAreasAreReadFromCoreCMakeLists)
   EXPECT_TRUE(areas.at("document").areas.count("robotcell"));
   EXPECT_TRUE(areas.at("base").areas.empty());
   EXPECT_TRUE(areas.at("skeleton").libraries.count("CGAL::CGAL"));
+}
+
+TEST(Layering, PluginsDeclareTheirAreasAndPublicHeaders)
+{
+  const auto sdk = layering::readSdkAreas(test::sourceDir() / "core" / "CMakeLists.txt");
+  EXPECT_EQ(sdk, (std::set<std::string>{"base", "mesh", "path", "plugin"}));
+  const auto envelope = layering::readPluginDeclaration(test::sourceDir() / "plugins" /
+                                                        "decomposer_envelope" / "CMakeLists.txt");
+  EXPECT_TRUE(envelope.areas.count("collision"));
+  EXPECT_FALSE(envelope.areas.count("planning"));
+  EXPECT_TRUE(envelope.publicHeaders.count("skeleton_fit.h"));
+  EXPECT_FALSE(envelope.publicHeaders.count("ray_caster.h"));
 }
 
 }  // namespace

@@ -103,14 +103,15 @@ double meanFieldGradient(const TriangleMesh& mesh, const std::vector<double>& fi
   return area > 0 ? sum / area : 0.0;
 }
 
-IsoDecomposition decomposeByIsoValues(const TriangleMesh& mesh, const std::vector<double>& field,
-                                      const BoundaryLoop& lower, const BoundaryLoop* upper,
-                                      const std::optional<Vec3>& closurePoint,
-                                      const IsoDecompositionOptions& options, Progress& progress)
+namespace {
+
+const char* const kFieldHint =
+    "use the geodesic distance from the lower edge (closed parts) or the harmonic field "
+    "(open parts: 0 on the lower edge, 1 on the upper one)";
+
+void requireUsableInput(const TriangleMesh& mesh, const std::vector<double>& field, const BoundaryLoop& lower,
+                        size_t n)
 {
-  const std::string fieldHint =
-      "use the geodesic distance from the lower edge (closed parts) or the harmonic field "
-      "(open parts: 0 on the lower edge, 1 on the upper one)";
   if (field.size() != mesh.vertexCount())
     throw InputError("the scalar field has " + std::to_string(field.size()) + " values for " +
                          std::to_string(mesh.vertexCount()) + " mesh vertices",
@@ -118,57 +119,77 @@ IsoDecomposition decomposeByIsoValues(const TriangleMesh& mesh, const std::vecto
   if (lower.vertices.size() < 3)
     throw InputError("the lower edge has fewer than 3 vertices", "repair the mesh");
   for (double v : field)
-    if (!std::isfinite(v)) throw InputError("the scalar field has non-finite values", fieldHint);
-  const size_t n = options.pointsPerContour;
+    if (!std::isfinite(v)) throw InputError("the scalar field has non-finite values", kFieldHint);
   if (n < 3)
     throw InputError("the generatrix count must be at least 3, not " + std::to_string(n), "raise n_points");
+}
 
-  IsoDecomposition out;
-  const double meanEdge = mesh.meanEdgeLength();
-  const double spacing = options.levelSpacing > 0 ? options.levelSpacing : meanEdge;
-  out.levelSpacing = spacing;
+// The field values of the interior levels, evenly spaced between the lower edge and the top.
+struct LevelSpan {
+  Range base;         // the field along the lower edge
+  int topVertex = 0;  // the vertex of maximal field
+  double top = 0.0;   // the upper edge's lowest value (open), the maximum (closed)
+  std::vector<double> values;
+};
 
-  // The field range the interior levels span: above every lower-edge value, below every
-  // upper-edge value (open) or the maximum (closed).
-  const Range base = fieldOn(lower.vertices, field);
-  int topVertex = static_cast<int>(std::max_element(field.begin(), field.end()) - field.begin());
-  double top = field[topVertex];
+// The field range the interior levels span: above every lower-edge value, below every upper-edge
+// value (open) or the maximum (closed).
+LevelSpan spanLevels(const TriangleMesh& mesh, const std::vector<double>& field, const BoundaryLoop& lower,
+                     const BoundaryLoop* upper, double spacing, size_t maxLevels,
+                     std::vector<std::string>& warnings)
+{
+  LevelSpan span;
+  span.base = fieldOn(lower.vertices, field);
+  const Range& base = span.base;
+  span.topVertex = static_cast<int>(std::max_element(field.begin(), field.end()) - field.begin());
+  span.top = field[span.topVertex];
   if (upper) {
     if (upper->vertices.size() < 3)
       throw InputError("the upper edge has fewer than 3 vertices", "repair the mesh");
     const Range up = fieldOn(upper->vertices, field);
-    top = up.lo;
-    if (up.hi - up.lo > 0.05 * (top - base.hi))
-      out.warnings.push_back("the field varies by " + significantText(up.hi - up.lo, 4) +
-                             " along the upper edge; the last contours may run into it");
+    span.top = up.lo;
+    if (up.hi - up.lo > 0.05 * (span.top - base.hi))
+      warnings.push_back("the field varies by " + significantText(up.hi - up.lo, 4) +
+                         " along the upper edge; the last contours may run into it");
   }
+  const double top = span.top;
   if (!(top > base.hi))
     throw InputError("the field does not grow from the lower edge (" + significantText(base.hi, 4) +
                          ") to the " + (upper ? "upper edge (" : "top (") + significantText(top, 4) + ")",
-                     fieldHint);
+                     kFieldHint);
   if (base.hi - base.lo > 0.05 * (top - base.hi))
-    out.warnings.push_back("the field varies by " + significantText(base.hi - base.lo, 4) +
-                           " along the lower edge; the first contours may be uneven");
+    warnings.push_back("the field varies by " + significantText(base.hi - base.lo, 4) +
+                       " along the lower edge; the first contours may be uneven");
 
   const double gradient = meanFieldGradient(mesh, field);
   const double stepsWanted = gradient > 0 ? (top - base.hi) / (spacing * gradient) : 2.0;
   size_t K = static_cast<size_t>(std::max(2.0, std::ceil(stepsWanted - 1e-9)));
-  if (K > options.maxLevels) {
-    out.warnings.push_back("level spacing " + significantText(spacing, 4) + " mm asks for " +
-                           std::to_string(K) + " contours; using " + std::to_string(options.maxLevels));
-    K = options.maxLevels;
+  if (K > maxLevels) {
+    warnings.push_back("level spacing " + significantText(spacing, 4) + " mm asks for " + std::to_string(K) +
+                       " contours; using " + std::to_string(maxLevels));
+    K = maxLevels;
   }
-  std::vector<double> values(K - 1);
-  for (size_t k = 1; k < K; ++k) values[k - 1] = base.hi + (top - base.hi) * static_cast<double>(k) / K;
+  span.values.resize(K - 1);
+  for (size_t k = 1; k < K; ++k) span.values[k - 1] = base.hi + (top - base.hi) * static_cast<double>(k) / K;
+  return span;
+}
 
+// The iso-contours at the span's values, one closed loop per level: specks dropped, the several
+// small loops at the top of a closed part cut off; refused where the part branches or a contour
+// runs into a free edge.
+std::vector<IsoLevel> singleLoopLevels(const TriangleMesh& mesh, const std::vector<double>& field,
+                                       const LevelSpan& span, const BoundaryLoop& lower, bool open,
+                                       double spacing, double meanEdge, std::vector<std::string>& warnings,
+                                       Progress& progress)
+{
   SubProgress extractProgress(progress, 0.0, 0.6, "iso-contours");
-  std::vector<IsoLevel> levels = extractIsoContours(mesh, field, values, &extractProgress);
+  std::vector<IsoLevel> levels = extractIsoContours(mesh, field, span.values, &extractProgress);
   progress.report(0.6, "iso-contours");
 
   size_t specks = 0;
   for (auto& l : levels) specks += dropSpecks(l, 3.0 * meanEdge);
   if (specks)
-    out.warnings.push_back(
+    warnings.push_back(
         std::to_string(specks) +
         " tiny iso-contours (under 3 mean edge lengths) around lone field extrema were ignored");
   // Closed parts: several small loops at the very top are several maxima of the field inside the
@@ -177,17 +198,17 @@ IsoDecomposition decomposeByIsoValues(const TriangleMesh& mesh, const std::vecto
   size_t firstOff = levels.size();
   for (size_t k = 0; k < levels.size() && firstOff == levels.size(); ++k)
     if (levels[k].contours.size() != 1) firstOff = k;
-  if (firstOff < levels.size() && !upper && firstOff > 0) {
+  if (firstOff < levels.size() && !open && firstOff > 0) {
     // Small: loops of radius under two level steps or two mesh edges, or under 5 % of the base.
     const double small = std::max(4.0 * kPi * std::max(spacing, meanEdge), 0.05 * lower.length);
     bool allSmall = true;
     for (size_t k = firstOff; k < levels.size() && allSmall; ++k)
       for (const auto& c : levels[k].contours) allSmall = allSmall && c.length() < small;
     if (allSmall) {
-      out.warnings.push_back("the field has several maxima near its top (field value " +
-                             significantText(levels[firstOff].value, 4) + "); the " +
-                             std::to_string(levels.size() - firstOff) +
-                             " contours above were dropped and the generatrices end at the closure point");
+      warnings.push_back("the field has several maxima near its top (field value " +
+                         significantText(levels[firstOff].value, 4) + "); the " +
+                         std::to_string(levels.size() - firstOff) +
+                         " contours above were dropped and the generatrices end at the closure point");
       levels.resize(firstOff);
     }
   }
@@ -197,31 +218,42 @@ IsoDecomposition decomposeByIsoValues(const TriangleMesh& mesh, const std::vecto
       throw InputError("the iso-contour at field value " + significantText(levels[k].value, 4) +
                            " (about z = " + significantText(meanZ(levels[k]), 4) +
                            " mm) runs into a free edge instead of going around the part",
-                       "the field must be constant along each free edge: " + fieldHint);
+                       std::string("the field must be constant along each free edge: ") + kFieldHint);
   }
+  return levels;
+}
 
-  // Contours base first, one orientation (higher field on the left), each starting next to the
-  // previous one's start.
+// Contours base first, one orientation (higher field on the left), each starting next to the
+// previous one's start, n points each.
+std::vector<ResampledLoop> resampleContours(const TriangleMesh& mesh, std::vector<IsoLevel> levels,
+                                            const LevelSpan& span, const BoundaryLoop& lower,
+                                            const BoundaryLoop* upper, size_t n, Progress& progress)
+{
   std::vector<IsoContour> loops;
   loops.reserve(levels.size() + 2);
-  loops.push_back(contourFromBoundaryLoop(mesh, lower.vertices, base.hi, true));
+  loops.push_back(contourFromBoundaryLoop(mesh, lower.vertices, span.base.hi, true));
   for (auto& l : levels) loops.push_back(std::move(l.contours[0]));
-  if (upper) loops.push_back(contourFromBoundaryLoop(mesh, upper->vertices, top, false));
-  out.contours.resize(loops.size());
-  out.contours[0] = resampleLoop(mesh, loops[0], n, 0.0);
+  if (upper) loops.push_back(contourFromBoundaryLoop(mesh, upper->vertices, span.top, false));
+  std::vector<ResampledLoop> contours(loops.size());
+  contours[0] = resampleLoop(mesh, loops[0], n, 0.0);
   // Each contour is parameterised by the one below it, so that generatrix m links the points that
   // face each other across the gap (see loop_following.h) instead of the points at the same
   // fraction of each contour's length, which shear across the part where consecutive contours
   // differ in shape.
   for (size_t c = 1; c < loops.size(); ++c) {
     progress.checkCancel();
-    out.contours[c] = resampleLoopFollowing(mesh, loops[c], out.contours[c - 1].positions());
+    contours[c] = resampleLoopFollowing(mesh, loops[c], contours[c - 1].positions());
   }
-  progress.report(0.75, "resampling");
+  return contours;
+}
 
-  // Closure point: the finder's, or the hottest vertex.
+// Generatrix m through point (k_c + m) mod n of every contour, then (closed parts) the closure
+// point: the finder's, or the hottest vertex.
+void linkGeneratrices(const TriangleMesh& mesh, int topVertex, bool open,
+                      const std::optional<Vec3>& closurePoint, size_t n, IsoDecomposition& out)
+{
   std::optional<SurfacePoint> closure;
-  if (!upper)
+  if (!open)
     closure = closurePoint ? closestSurfacePoint(mesh, *closurePoint) : surfacePointAtVertex(mesh, topVertex);
 
   std::vector<std::vector<Vec3>> positions(out.contours.size());
@@ -252,6 +284,27 @@ IsoDecomposition decomposeByIsoValues(const TriangleMesh& mesh, const std::vecto
       g.normals[m][C] = closureNormal;
     }
   });
+}
+
+}  // namespace
+
+IsoDecomposition decomposeByIsoValues(const TriangleMesh& mesh, const std::vector<double>& field,
+                                      const BoundaryLoop& lower, const BoundaryLoop* upper,
+                                      const std::optional<Vec3>& closurePoint,
+                                      const IsoDecompositionOptions& options, Progress& progress)
+{
+  const size_t n = options.pointsPerContour;
+  requireUsableInput(mesh, field, lower, n);
+  IsoDecomposition out;
+  const double meanEdge = mesh.meanEdgeLength();
+  const double spacing = options.levelSpacing > 0 ? options.levelSpacing : meanEdge;
+  out.levelSpacing = spacing;
+  const LevelSpan span = spanLevels(mesh, field, lower, upper, spacing, options.maxLevels, out.warnings);
+  std::vector<IsoLevel> levels =
+      singleLoopLevels(mesh, field, span, lower, upper != nullptr, spacing, meanEdge, out.warnings, progress);
+  out.contours = resampleContours(mesh, std::move(levels), span, lower, upper, n, progress);
+  progress.report(0.75, "resampling");
+  linkGeneratrices(mesh, span.topVertex, upper != nullptr, closurePoint, n, out);
   progress.report(1.0, "generatrices");
   return out;
 }

@@ -4,12 +4,12 @@
 
 #include <cmath>
 
-#include "export_test_data.h"
+#include "export/export_test_data.h"
+#include "export/tp_reader.h"
 #include "spira/base/error.h"
 #include "spira/base/units.h"
 #include "spira/path/tool_frame.h"
 #include "support/test_support.h"
-#include "tp_reader.h"
 
 namespace spira {
 namespace {

@@ -4,8 +4,8 @@
 
 #include <cmath>
 
-#include "export_test_data.h"
-#include "krl_reader.h"
+#include "export/export_test_data.h"
+#include "export/krl_reader.h"
 #include "spira/base/error.h"
 #include "spira/base/units.h"
 #include "spira/path/tool_frame.h"
