@@ -44,6 +44,8 @@ SkeletonSection computeSkeletonSection(const TriangleMesh& mesh)
   const auto t0 = std::chrono::steady_clock::now();
   try {
     s.result = computeCurveSkeleton(mesh, SkeletonOptions{}, progress);
+  } catch (const InternalError&) {
+    throw;  // a bug, reported as one (exit 1), not as a finding about the part
   } catch (const Error& e) {
     s.error = e.what();
     s.hint = e.hint();

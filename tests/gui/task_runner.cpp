@@ -91,6 +91,12 @@ TEST(TaskRunner, ReturnsErrorsWithTheirHint)
   EXPECT_TRUE(o.message.contains("index out of range"));
   EXPECT_FALSE(o.hint.isEmpty());
 
+  // Spira's own broken invariant is a bug, never shown as a problem with the user's input.
+  o = runAndWait(runner, [](Progress&) { throw InternalError("spiral has no revolutions", "unused hint"); });
+  EXPECT_EQ(o.status, TaskOutcome::Status::Failed);
+  EXPECT_EQ(o.message, "Internal error: spiral has no revolutions");
+  EXPECT_TRUE(o.hint.contains("bug in Spira")) << o.hint.toStdString();
+
   int value = 0;
   o = runAndWait(runner, [&value](Progress& p) {
     p.report(1.0, "done");

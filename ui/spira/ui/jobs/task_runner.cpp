@@ -16,6 +16,20 @@
 
 namespace spira::ui {
 
+namespace {
+
+// A broken invariant of Spira's own (or an exception no layer turned into an Error): a bug.
+TaskOutcome bugOutcome(const std::exception& e)
+{
+  TaskOutcome out;
+  out.status = TaskOutcome::Status::Failed;
+  out.message = QObject::tr("Internal error: %1").arg(QString::fromStdString(e.what()));
+  out.hint = QObject::tr("This is a bug in Spira; please report it with the file you used.");
+  return out;
+}
+
+}  // namespace
+
 // State the worker writes and the GUI thread reads. Progress is polled by a timer instead of
 // posted per report: a job may report thousands of times a second.
 struct TaskRunner::Shared {
@@ -76,6 +90,8 @@ bool TaskRunner::start(const QString& title, Job job, Done done, Display display
       job(shared->progress);
     } catch (const Cancelled&) {
       out.status = TaskOutcome::Status::Cancelled;
+    } catch (const InternalError& e) {
+      out = bugOutcome(e);
     } catch (const Error& e) {
       out.status = TaskOutcome::Status::Failed;
       out.message = QString::fromStdString(e.what());
@@ -85,9 +101,7 @@ bool TaskRunner::start(const QString& title, Job job, Done done, Display display
       out.message = QObject::tr("Out of memory.");
       out.hint = QObject::tr("Close other programs or work on a smaller part.");
     } catch (const std::exception& e) {
-      out.status = TaskOutcome::Status::Failed;
-      out.message = QObject::tr("Internal error: %1").arg(QString::fromStdString(e.what()));
-      out.hint = QObject::tr("This is a bug in Spira; please report it with the file you used.");
+      out = bugOutcome(e);
     }
     std::lock_guard<std::mutex> lock(shared->mutex);
     shared->outcome = out;
