@@ -208,10 +208,15 @@ ThermalResult simulateThermal(const ThermalMesh& mesh, const ThermalSettings& se
   for (int v : res.probeNodes)
     if (v < 0 || v >= n) throw InputError("probe node " + std::to_string(v) + " is not in the mesh");
   res.probeTemperatures.assign(res.probeNodes.size(), {});
+  // What the inactive filler conducts into a node before it is deposited is not material's heat
+  // (its capacity is thousands of times smaller, and birth conserves its energy): a node not yet
+  // deposited reports the initial temperature and takes no part in peaks and times above melting.
+  std::vector<char> deposited(mesh.nodeCount(), settings.activateAll ? 1 : 0);
   const auto record = [&](double t) {
     res.probeTimes.push_back(t);
     for (size_t p = 0; p < res.probeNodes.size(); ++p)
-      res.probeTemperatures[p].push_back(temp[size_t(res.probeNodes[p])]);
+      res.probeTemperatures[p].push_back(
+          deposited[size_t(res.probeNodes[p])] ? temp[size_t(res.probeNodes[p])] : t0);
   };
   record(0.0);
 
@@ -250,6 +255,7 @@ ThermalResult simulateThermal(const ThermalMesh& mesh, const ThermalSettings& se
       system.activate(e);
       for (int a = 0; a < 3; ++a) {
         const size_t v = size_t(nodes[size_t(a)]);
+        deposited[v] = 1;
         temp[v] = t0 + before[size_t(a)] / system.capacitySum[v] * (temp[v] - t0);
       }
     }
@@ -287,6 +293,7 @@ ThermalResult simulateThermal(const ThermalMesh& mesh, const ThermalSettings& se
     for (int i = 0; i < window; ++i) {
       const double a = previous[size_t(i)], b = temp[size_t(i)];
       res.energy.lost += dt * system.lossWeight[size_t(i)] * ((1.0 - theta) * a + theta * b - air);
+      if (!deposited[size_t(i)]) continue;
       if (b >= res.nodePeak[size_t(i)]) {
         res.nodePeak[size_t(i)] = b;
         if (!onSubstrate[size_t(i)]) valley[size_t(i)] = b;
