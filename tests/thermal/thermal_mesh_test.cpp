@@ -122,6 +122,25 @@ TEST(ThermalMesh, PathsAreLaidOneAfterTheOtherWithAColdMoveBetween)
   EXPECT_FALSE(m.heatArcOn[size_t(m.pointHeatIndex[120] - 1)]);
 }
 
+// A branch that starts above the substrate rests on the nearest nodes of the paths laid before it.
+TEST(ThermalMesh, ABranchRestsOnTheEarlierPaths)
+{
+  Trajectory t = test::cylinderWall(15.0, 3, 40, 2.0, 6.0);
+  Trajectory branch = test::cylinderWall(15.0, 2, 40, 2.0, 6.0);
+  for (TrajectoryPoint& p : branch.points) {
+    p.position.z() += 12.0;
+    p.path = 1;
+  }
+  t.points.insert(t.points.end(), branch.points.begin(), branch.points.end());
+  const ThermalMesh m = buildThermalMesh(t, {});
+  EXPECT_EQ(m.substrateNodes.size(), size_t(41));
+  for (size_t i = 120; i < 160; ++i) {
+    const Vec3& below = m.nodes[size_t(m.pointBelowNode[i])];
+    EXPECT_NEAR(below.z(), 6.0, 1e-9) << i;
+    EXPECT_LT((below - t.points[i].position).head<2>().norm(), 1e-9) << i;
+  }
+}
+
 TEST(ThermalMesh, RefusesWhatItCannotHeat)
 {
   EXPECT_THROW(buildThermalMesh({}, {}), InputError);
