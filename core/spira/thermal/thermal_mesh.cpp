@@ -208,23 +208,51 @@ class MeshBuilder {
       const int b0 = revStart[size_t(r - 1)] * k, b1 = revStart[size_t(r)] * k, t1 = topEnd(r);
       bottom.assign(line.begin() + b0, line.begin() + b1 + 1);
       top.assign(line.begin() + b1, line.begin() + t1 + 1);
-      // The point below: the same generatrix on the previous revolution, or the nearest index.
+      // The point below: on revolutions of equal point count, the same generatrix on the previous one
+      // (the planner's generatrices are shared by all revolutions); otherwise the point at the same
+      // fraction of the revolution's length, so that counts that differ cannot cross the zipper.
+      const int jEnd = r + 1 < nRev ? revStart[size_t(r + 1)] : m - 1;
+      const int count = (r + 1 < nRev ? revStart[size_t(r + 1)] : m) - revStart[size_t(r)];
+      const bool sameCount = count == revStart[size_t(r)] - revStart[size_t(r - 1)];
       std::vector<std::pair<int, int>> previous;
       for (int j = revStart[size_t(r - 1)]; j < revStart[size_t(r)]; ++j)
         previous.emplace_back(traj_.points[begin + size_t(j)].generatrix, j);
       std::sort(previous.begin(), previous.end());
-      const auto below = [&](int j) {
+      const auto byGeneratrix = [&](int j) {
         const int g = traj_.points[begin + size_t(j)].generatrix;
         auto it = std::lower_bound(previous.begin(), previous.end(), std::make_pair(g, -1));
         if (it == previous.end() || (it != previous.begin() && g - std::prev(it)->first < it->first - g))
           --it;
         return double(it->second * k - b0);
       };
-      const int jEnd = r + 1 < nRev ? revStart[size_t(r + 1)] : m - 1;
+      const auto lengthsOf = [&](int from, int to) {  // cumulative lengths along points [from, to]
+        std::vector<double> len{0.0};
+        for (int j = from + 1; j <= to; ++j)
+          len.push_back(len.back() + (traj_.points[begin + size_t(j)].position -
+                                      traj_.points[begin + size_t(j) - 1].position)
+                                         .norm());
+        return len;
+      };
+      const std::vector<double> topLength = lengthsOf(revStart[size_t(r)], jEnd);
+      const std::vector<double> bottomLength = lengthsOf(revStart[size_t(r - 1)], revStart[size_t(r)]);
+      const auto byLength = [&](int j) {
+        const double f =
+            topLength.back() > 0.0 ? topLength[size_t(j - revStart[size_t(r)])] / topLength.back() : 0.0;
+        const double target = f * bottomLength.back();
+        const size_t i =
+            size_t(std::upper_bound(bottomLength.begin(), bottomLength.end(), target) - bottomLength.begin());
+        if (i >= bottomLength.size()) return double(b1 - b0);
+        const double w =
+            (target - bottomLength[i - 1]) / std::max(1e-300, bottomLength[i] - bottomLength[i - 1]);
+        return (double(i - 1) + w) * k;
+      };
       std::vector<double> pointU;
       for (int j = revStart[size_t(r)]; j <= jEnd; ++j) {
         // The point that opens the next revolution sits over the end of this strip's bottom.
-        pointU.push_back(r + 1 < nRev && j == jEnd ? double(b1 - b0) : below(j));
+        if (r + 1 < nRev && j == jEnd)
+          pointU.push_back(double(b1 - b0));
+        else
+          pointU.push_back(sameCount ? byGeneratrix(j) : byLength(j));
       }
       for (size_t q = 1; q < pointU.size(); ++q) pointU[q] = std::max(pointU[q], pointU[q - 1]);
       u.clear();
