@@ -68,5 +68,6 @@ int cmdField(const std::vector<std::string>& args);
 int cmdKin(const std::vector<std::string>& args);
 int cmdExport(const std::vector<std::string>& args);
 int cmdCompare(const std::vector<std::string>& args);
+int cmdThermal(const std::vector<std::string>& args);
 
 }  // namespace spira::cli

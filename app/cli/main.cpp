@@ -20,6 +20,8 @@ constexpr const char* kUsageText =
     "  field PART --kind geodesic|harmonic -o FILE   per-vertex scalar field as .csv or .vtp\n"
     "  plan PART -o DIR   plan one continuous spiral: DIR/trajectory.csv and DIR/report.json\n"
     "  compare PART -o DIR   every strategy and the planar 2.5D baseline: DIR/compare.json, .csv\n"
+    "  thermal PLAN_DIR|PROJECT -o DIR   heat of the build: DIR/thermal.json, thermal_points.csv, "
+    "probes.csv\n"
     "  kin CELL --fk J1..J6 | --ik X Y Z A B C   forward / inverse kinematics of a cell's robot\n"
     "  export PLAN_DIR --format krl|fanuc_tp -o DIR   robot program of a plan\n"
     "  sample NAME -o FILE   write a bundled sample part (open-cylinder, dome, cone) made in code\n"
@@ -40,6 +42,7 @@ int dispatch(const std::string& command, const std::vector<std::string>& rest)
   if (command == "kin") return cmdKin(rest);
   if (command == "export") return cmdExport(rest);
   if (command == "compare") return cmdCompare(rest);
+  if (command == "thermal") return cmdThermal(rest);
   throw UsageError("unknown command '" + command + "'", "run 'spira-cli --help' for the list of commands");
 }
 

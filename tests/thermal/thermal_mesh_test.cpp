@@ -93,7 +93,8 @@ TEST(ThermalMesh, TorchTimesComeFromTheTravelSpeedAndNodesFollowDeposition)
   const ThermalMesh m = buildThermalMesh(t, s);
   double time = 0.0;
   for (size_t i = 1; i < t.size(); ++i) {
-    const double v = 0.5 * (t.points[i].travelSpeed + t.points[i - 1].travelSpeed);
+    const double v =
+        t.points[i - 1].travelSpeed;  // each segment at its first point's speed, as the build time
     time += (t.points[i].position - t.points[i - 1].position).norm() / v;
     EXPECT_NEAR(m.heatTime[size_t(m.pointHeatIndex[i])], time, 1e-9 * time);
   }

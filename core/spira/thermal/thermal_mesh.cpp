@@ -60,9 +60,10 @@ class MeshBuilder {
       if (!mesh_.heatTime.empty()) {
         const Vec3 from = traj_.points[i - 1].position;
         const double len = (p.position - from).norm();
-        // Inside a path the torch moves at the mean of its two points' speeds; the move from one
-        // path to the next is a travel at the next point's speed.
-        const double v = i == begin ? speedOf(i) : 0.5 * (speedOf(i - 1) + speedOf(i));
+        // Inside a path each segment is run at its first point's speed, as the process model times
+        // the build (report.json build_time_s); the move from one path to the next is a travel at the
+        // next point's speed.
+        const double v = i == begin ? speedOf(i) : speedOf(i - 1);
         const bool arc = i != begin && p.arcOn && traj_.points[i - 1].arcOn;
         const double t0 = mesh_.heatTime.back();
         const int sub = i == begin ? 1 : k;

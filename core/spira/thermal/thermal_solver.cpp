@@ -4,11 +4,14 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <limits>
 #include <numeric>
 #include <string>
 
 #include "spira/base/error.h"
+#include "spira/base/number_text.h"
 
 namespace spira {
 namespace {
@@ -29,6 +32,20 @@ std::vector<double> stepTimes(const ThermalMesh& mesh, const ThermalSettings& s)
   const int n = int(std::ceil(s.coolingTime / dt - 1e-9));
   for (int i = 1; i <= n; ++i) t.push_back(std::min(end, build + i * dt));
   return t;
+}
+
+// `x` to six significant digits, rounded down: a limit a message proposes must pass the check.
+std::string roundedDownText(double x)
+{
+  const double scale = std::pow(10.0, 5.0 - std::floor(std::log10(x)));
+  double v = std::floor(x * scale) / scale;
+  char text[64];
+  for (int tries = 0; tries < 3; ++tries) {
+    std::snprintf(text, sizeof text, "%.6g", v);
+    if (std::strtod(text, nullptr) <= x) break;
+    v -= 1.0 / scale;
+  }
+  return text;
 }
 
 void validate(const ThermalMesh& mesh, const ThermalSettings& s)
@@ -52,10 +69,10 @@ void validate(const ThermalMesh& mesh, const ThermalSettings& s)
     }
     const double longest = fastest > 0.0 ? mesh.thickness / fastest : std::numeric_limits<double>::infinity();
     if (s.timeStep > longest)
-      throw InputError("a time step of " + std::to_string(s.timeStep) +
-                           " s lets the torch cross more than the " + std::to_string(mesh.thickness) +
+      throw InputError("a time step of " + significantText(s.timeStep, 6) +
+                           " s lets the torch cross more than the " + significantText(mesh.thickness, 6) +
                            " mm shell in one step",
-                       "use at most " + std::to_string(longest) + " s, or the automatic step");
+                       "use at most " + roundedDownText(longest) + " s, or the automatic step");
   }
 }
 

@@ -1,0 +1,143 @@
+// spira-cli thermal on a planned open cylinder: the heat put in is the arc power times the arc-on
+// time read from the plan itself, in = stored + lost, one row per planned point, twice the power
+// gives twice the rise (the model is linear), a probe stays at ambient until the deposit reaches it;
+// bad input exits 3 with nothing written, and the time step the message proposes works.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <regex>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "cli_runner.h"
+#include "spira/planning/trajectory_csv_reader.h"
+#include "support/test_support.h"
+
+namespace fs = std::filesystem;
+
+namespace spira::test {
+namespace {
+
+class CliThermal : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite()
+  {
+    dir_ = new TempDir;
+    const CliRun r = runCli({"plan", (sourceDir() / "resources/samples/open_cylinder.stl").string(), "-o",
+                             (*dir_ / "plan").string(), "--points-per-rev", "90"});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+  }
+  static void TearDownTestSuite()
+  {
+    delete dir_;
+    dir_ = nullptr;
+  }
+  static fs::path plan() { return *dir_ / "plan"; }
+  static nlohmann::json thermal(const fs::path& out)
+  {
+    return nlohmann::json::parse(readBytes(out / "thermal.json"));
+  }
+  TempDir tmp_;
+  static TempDir* dir_;
+};
+TempDir* CliThermal::dir_ = nullptr;
+
+// The arc-on time of the plan, from its own channels: each arc-on segment at its first point's speed.
+double arcOnSeconds(const Trajectory& t)
+{
+  double s = 0.0;
+  for (size_t i = 0; i + 1 < t.size(); ++i)
+    if (t.points[i].arcOn && t.points[i + 1].arcOn)
+      s += (t.points[i + 1].position - t.points[i].position).norm() / t.points[i].travelSpeed;
+  return s;
+}
+
+std::vector<std::vector<double>> readCsv(const fs::path& file, std::string* header)
+{
+  std::ifstream in(file);
+  std::getline(in, *header);
+  std::vector<std::vector<double>> rows;
+  std::string line;
+  while (std::getline(in, line)) {
+    std::stringstream s(line);
+    std::string cell;
+    rows.emplace_back();
+    while (std::getline(s, cell, ',')) rows.back().push_back(std::stod(cell));
+  }
+  return rows;
+}
+
+TEST_F(CliThermal, EnergyPointsProbesAndLinearity)
+{
+  const fs::path out = tmp_ / "thermal";
+  const CliRun r =
+      runCli({"thermal", plan().string(), "-o", out.string(), "--probe", "50,0,2", "--probe", "50,0,55"});
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const nlohmann::json j = thermal(out);
+  const Trajectory path = readTrajectoryCsv(plan() / "trajectory.csv");
+  const double in = j.at("energy_in_J").get<double>();
+  EXPECT_NEAR(in, 1000.0 * arcOnSeconds(path), 1e-6 * in);  // 1000 W, the default
+  EXPECT_NEAR(j.at("energy_stored_J").get<double>() + j.at("energy_lost_J").get<double>(), in, 0.01 * in);
+  EXPECT_EQ(j.at("substrate_z_mm"), 0.0);  // the sample stands on z = 0
+  std::string header;
+  const auto points = readCsv(out / "thermal_points.csv", &header);
+  EXPECT_EQ(header, "index,peak_C,interpass_C,below_at_arrival_C,time_above_melt_s");
+  ASSERT_EQ(points.size(), path.size());
+  for (const auto& row : points) EXPECT_GT(row[1], 1500.0) << "point " << row[0] << " never melted";
+  const auto probes = readCsv(out / "probes.csv", &header);
+  ASSERT_TRUE(std::regex_match(header, std::regex(R"(t,node_\d+_C,node_\d+_C)"))) << header;
+  ASSERT_GT(probes.size(), 10u);
+  // The probe at the top stays at ambient until the torch comes near, long after the start.
+  EXPECT_DOUBLE_EQ(probes[probes.size() / 2][2], 20.0);
+  double topPeak = 0.0;
+  for (const auto& row : probes) topPeak = std::max(topPeak, row[2]);
+  EXPECT_GT(topPeak, 1500.0);
+
+  const fs::path twice = tmp_ / "twice";
+  ASSERT_EQ(runCli({"thermal", plan().string(), "-o", twice.string(), "--power", "2000"}).exitCode, 0);
+  const double rise = j.at("max_peak_C").get<double>() - 20.0;
+  EXPECT_NEAR(thermal(twice).at("max_peak_C").get<double>() - 20.0, 2.0 * rise, 1e-6 * rise);
+}
+
+// A saved project is simulated on the path its robot was solved for, with its bead width.
+TEST_F(CliThermal, PlannedProject)
+{
+  const fs::path out = tmp_ / "project";
+  const CliRun r =
+      runCli({"thermal", (sourceDir() / "tests/data/projects/open_cylinder_227a109.spira").string(), "-o",
+              out.string()});
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  std::string header;
+  EXPECT_EQ(readCsv(out / "thermal_points.csv", &header).size(), 720u);
+  EXPECT_EQ(thermal(out).at("shell_thickness_mm"), 5.2);
+  EXPECT_NEAR(thermal(out).at("substrate_z_mm").get<double>(), 0.0, 1e-6);
+}
+
+TEST_F(CliThermal, BadInputExitsThreeWithNothingWritten)
+{
+  const fs::path out = tmp_ / "bad";
+  CliRun r = runCli({"thermal", plan().string(), "-o", out.string(), "--material", "Inconel"});
+  EXPECT_EQ(r.exitCode, 3) << r.err;
+  EXPECT_NE(r.err.find("unknown material 'Inconel' (use one of: G3Si1, 316L, Ti-6Al-4V, AlMg5)"),
+            std::string::npos)
+      << r.err;
+  r = runCli({"thermal", plan().string(), "-o", out.string(), "--power", "0"});
+  EXPECT_EQ(r.exitCode, 3) << r.err;
+  r = runCli({"thermal", plan().string(), "-o", out.string(), "--voltage", "18"});
+  EXPECT_EQ(r.exitCode, 2) << r.err;
+  r = runCli({"thermal", plan().string()});
+  EXPECT_EQ(r.exitCode, 2) << r.err;
+  // A step the torch outruns: refused, with the longest that resolves it, which then works.
+  r = runCli({"thermal", plan().string(), "-o", out.string(), "--dt", "5"});
+  EXPECT_EQ(r.exitCode, 3) << r.err;
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(r.err, m, std::regex(R"(use at most ([0-9.]+) s)"))) << r.err;
+  EXPECT_FALSE(fs::exists(out / "thermal.json"));
+  r = runCli({"thermal", plan().string(), "-o", out.string(), "--dt", m[1].str()});
+  EXPECT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_TRUE(fs::exists(out / "thermal.json"));
+}
+
+}  // namespace
+}  // namespace spira::test
