@@ -13,10 +13,11 @@ void spira_register_import_cad(spira::PluginRegistry& registry);
 #if defined(__SANITIZE_ADDRESS__)
 // In a sanitizer build a crash inside OpenCASCADE ends the helper by its signal, as in a release
 // build, instead of through AddressSanitizer's report and exit code 1: the parent names a crash by
-// its signal, and that is what the hostile-file tests check.
+// its signal, and that is what the hostile-file tests check. An allocation past the reader's memory
+// limit fails as in a release build (null, then bad_alloc) instead of ending the process.
 extern "C" __attribute__((used, visibility("default"))) const char* __asan_default_options()
 {
-  return "handle_segv=0:handle_sigbus=0:handle_sigfpe=0:handle_sigill=0";
+  return "handle_segv=0:handle_sigbus=0:handle_sigfpe=0:handle_sigill=0:allocator_may_return_null=1";
 }
 #endif
 
