@@ -71,6 +71,7 @@ class MeshBuilder {
           const double f = double(q) / sub;
           const Vec3 pos = from + f * (p.position - from);
           mesh_.heatArcOn.push_back(char(arc));
+          mesh_.heatWireFeed.push_back(traj_.points[i - 1].wireFeed);
           mesh_.heatTime.push_back(t0 + f * len / v);
           const bool same = len < 1e-9 && i != begin;
           // A repeated point shares its node: a zero-length segment would give zero-area elements.

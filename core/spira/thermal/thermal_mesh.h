@@ -33,10 +33,11 @@ struct ThermalMesh {
   // their nodes, the time the torch is there, and whether the arc is on from one to the next.
   std::vector<int> heatNode;
   std::vector<double> heatTime;
-  std::vector<char> heatArcOn;      // heatArcOn[i]: segment i -> i + 1 carries heat (size heatNode - 1)
-  std::vector<int> pointHeatIndex;  // trajectory point -> its index in the heat path
-  std::vector<int> pointBelowNode;  // trajectory point -> the node under it (previous layer or substrate)
-  double thickness = 5.0;           // mm
+  std::vector<char> heatArcOn;       // heatArcOn[i]: segment i -> i + 1 carries heat (size heatNode - 1)
+  std::vector<double> heatWireFeed;  // mm/s on segment i -> i + 1, for a power set per unit wire feed
+  std::vector<int> pointHeatIndex;   // trajectory point -> its index in the heat path
+  std::vector<int> pointBelowNode;   // trajectory point -> the node under it (previous layer or substrate)
+  double thickness = 5.0;            // mm
 
   size_t nodeCount() const { return nodes.size(); }
   size_t elementCount() const { return triangles.size(); }

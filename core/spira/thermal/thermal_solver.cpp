@@ -51,13 +51,14 @@ std::string roundedDownText(double x)
 void validate(const ThermalMesh& mesh, const ThermalSettings& s)
 {
   validateThermalMaterial(s.material);
-  if (!(s.power >= 0.0) || !std::isfinite(s.power))
+  if (!(s.power >= 0.0) || !std::isfinite(s.power) || !(s.powerPerWireFeed >= 0.0) ||
+      !std::isfinite(s.powerPerWireFeed))
     throw InputError("the arc power must be positive",
                      "give the power in W, or voltage, current and efficiency");
   if (s.films.air < 0.0 || s.films.substrate < 0.0)
     throw InputError("film coefficients cannot be negative", "35 W/(m2 K) for air, 2000 for the substrate");
   if (s.coolingTime < 0.0 || s.timeStep < 0.0) throw InputError("times cannot be negative");
-  if (s.timeStep > 0.0 && s.power > 0.0) {
+  if (s.timeStep > 0.0 && (s.power > 0.0 || s.powerPerWireFeed > 0.0)) {
     // The source must not cross more than one shell thickness in a step.
     double fastest = 0.0;
     for (size_t i = 0; i + 1 < mesh.heatTime.size(); ++i) {
@@ -153,7 +154,10 @@ class PrefixSolver {
 // right way round), integrated over the time the torch spends on it, so no segment is skipped.
 class SourceLoad {
  public:
-  SourceLoad(const ThermalMesh& mesh, double power) : mesh_(mesh), power_(power) {}
+  SourceLoad(const ThermalMesh& mesh, double power, double perWireFeed)
+      : mesh_(mesh), power_(power), perWireFeed_(perWireFeed)
+  {
+  }
 
   double add(double t0, double t1, std::vector<double>& energy)
   {
@@ -162,20 +166,21 @@ class SourceLoad {
     double total = 0.0;
     for (size_t i = segment_; i + 1 < h.size() && h[i] < t1; ++i) {
       const double ta = h[i], tb = h[i + 1];
-      if (!mesh_.heatArcOn[i] || !(tb > ta) || power_ == 0.0) continue;
+      const double power = perWireFeed_ > 0.0 ? perWireFeed_ * mesh_.heatWireFeed[i] : power_;
+      if (!mesh_.heatArcOn[i] || !(tb > ta) || power == 0.0) continue;
       const double s0 = std::max(ta, t0), s1 = std::min(tb, t1);
       if (!(s1 > s0)) continue;
       const double towardB = ((s1 - ta) * (s1 - ta) - (s0 - ta) * (s0 - ta)) / (2.0 * (tb - ta));
-      energy[size_t(mesh_.heatNode[i])] += power_ * (s1 - s0 - towardB);
-      energy[size_t(mesh_.heatNode[i + 1])] += power_ * towardB;
-      total += power_ * (s1 - s0);
+      energy[size_t(mesh_.heatNode[i])] += power * (s1 - s0 - towardB);
+      energy[size_t(mesh_.heatNode[i + 1])] += power * towardB;
+      total += power * (s1 - s0);
     }
     return total;
   }
 
  private:
   const ThermalMesh& mesh_;
-  double power_;
+  double power_, perWireFeed_;
   size_t segment_ = 0;
 };
 
@@ -231,6 +236,7 @@ ThermalResult simulateThermal(const ThermalMesh& mesh, const ThermalSettings& se
   std::vector<char> deposited(mesh.nodeCount(), settings.activateAll ? 1 : 0);
   const auto record = [&](double t) {
     res.probeTimes.push_back(t);
+    if (settings.onStep) settings.onStep(ThermalStep{t, temp, deposited});
     for (size_t p = 0; p < res.probeNodes.size(); ++p)
       res.probeTemperatures[p].push_back(
           deposited[size_t(res.probeNodes[p])] ? temp[size_t(res.probeNodes[p])] : t0);
@@ -249,7 +255,7 @@ ThermalResult simulateThermal(const ThermalMesh& mesh, const ThermalSettings& se
   size_t nextPoint = 0;
 
   PrefixSolver solver(system);
-  SourceLoad source(mesh, settings.power);
+  SourceLoad source(mesh, settings.power, settings.powerPerWireFeed);
   size_t born = 0, reached = 0;
   int window = 0;
   double iterations = 0.0, windowSum = 0.0;

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <functional>
 #include <utility>
 #include <vector>
 
@@ -13,12 +14,24 @@ namespace spira {
 
 enum class ThermalScheme { CrankNicolson, ImplicitEuler };
 
+// The state after one step, for observers that record more than ThermalResult keeps (frames of the
+// field, the melt pool). Temperatures in C; a node not yet deposited holds what the inactive filler
+// conducted into it, not material heat.
+struct ThermalStep {
+  double time = 0.0;  // s
+  const std::vector<double>& temperature;
+  const std::vector<char>& deposited;
+};
+
 // The transient model of 000_dbb97c2716e10cc3.txt chapter 5: a moving point source along the heat
 // path, element birth that follows it, conduction and convection, the theta scheme. SI units but
 // positions (mm, as the mesh) and temperatures (C).
 struct ThermalSettings {
   ThermalMaterial material = thermalMaterialPreset("G3Si1");
   double power = 1000.0;  // W reaching the part while the arc is on (see arcPower); 0 = no source
+  // J per mm of wire: when positive, the power follows the wire feed (a synergic line's energy per
+  // unit wire, power = powerPerWireFeed x WFS) instead of `power`.
+  double powerPerWireFeed = 0.0;
   ThermalFilms films;
   double initialTemperature = 20.0;  // C, every node at t = 0
   ThermalScheme scheme = ThermalScheme::CrankNicolson;
@@ -34,7 +47,8 @@ struct ThermalSettings {
   // twelve revolutions of the dome, in 23 iterations per step instead of 40.
   double tolerance = 1e-6;
   std::vector<int> probeNodes;
-  std::vector<Vec3> probePositions;  // mm; the nearest node is recorded
+  std::vector<Vec3> probePositions;                // mm; the nearest node is recorded
+  std::function<void(const ThermalStep&)> onStep;  // after t = 0 and after every step
 };
 
 // The arc power reaching the part, efficiency x U x I, in W. InputError for a non-positive voltage
