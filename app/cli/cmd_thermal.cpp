@@ -18,7 +18,7 @@
 #include "spira/pipeline/planned_path.h"
 #include "spira/planning/plan_schemas.h"
 #include "spira/planning/trajectory_csv_reader.h"
-#include "spira/thermal/thermal_solver.h"
+#include "spira/thermal/thermal_study.h"
 
 namespace fs = std::filesystem;
 
@@ -101,12 +101,18 @@ double arcPowerFrom(Args& args)
                                      : finiteNumberFlag("--efficiency", efficiency, "--efficiency 0.8"));
 }
 
-std::string pointsCsv(const ThermalResult& r)
+std::string pointsCsv(const ThermalStudy& study)
 {
-  std::string out = "index,peak_C,interpass_C,below_at_arrival_C,time_above_melt_s\n";
+  const ThermalResult& r = study.result;
+  std::string out = "index,peak_C,interpass_C,time_above_melt_s,bond,risk,below_at_arrival_C,pool_mm\n";
   for (size_t i = 0; i < r.peak.size(); ++i) {
     appendNumber(out, static_cast<long long>(i));
-    for (double v : {r.peak[i], r.interpass[i], r.belowAtArrival[i], r.timeAboveMelt[i]}) {
+    for (double v : {r.peak[i], r.interpass[i], r.timeAboveMelt[i], study.bond[i]}) {
+      out += ',';
+      appendNumber(out, v);
+    }
+    out += study.risk[i] ? ",1" : ",0";
+    for (double v : {r.belowAtArrival[i], study.poolLength[i]}) {
       out += ',';
       appendNumber(out, v);
     }
@@ -136,41 +142,48 @@ double maxOf(const std::vector<double>& v)
   return v.empty() ? 0.0 : *std::max_element(v.begin(), v.end());
 }
 
-nlohmann::json thermalJson(const ThermalResult& r, const ThermalSettings& s, const ThermalMeshSettings& m,
-                           double meshSeconds)
+nlohmann::json thermalJson(const ThermalStudy& study, const ThermalStudySettings& settings)
 {
+  const ThermalResult& r = study.result;
+  const ThermalSettings& s = settings.solver;
+  const ThermalMeshSettings& m = settings.mesh;
   size_t aboveMeltAtInterpass = 0;
   for (double t : r.interpass) aboveMeltAtInterpass += t >= s.material.meltingTemperature;
-  return {{"material",
-           {{"name", s.material.name},
-            {"density_kg_m3", s.material.density},
-            {"conductivity_W_mK", s.material.conductivity},
-            {"specific_heat_J_kgK", s.material.specificHeat},
-            {"melting_C", s.material.meltingTemperature},
-            {"source", s.material.source}}},
-          {"power_W", s.power},
-          {"scheme", s.scheme == ThermalScheme::CrankNicolson ? "crank_nicolson" : "implicit_euler"},
-          {"time_step_s", s.timeStep > 0.0 ? nlohmann::json(s.timeStep) : nlohmann::json("auto")},
-          {"sub_segments", m.subSegments},
-          {"divisions", m.divisions},
-          {"substrate_z_mm", m.substrateZ},
-          {"shell_thickness_mm", m.thickness},
-          {"h_air_W_m2K", s.films.air},
-          {"h_substrate_W_m2K", s.films.substrate},
-          {"energy_in_J", r.energy.in},
-          {"energy_stored_J", r.energy.stored},
-          {"energy_lost_J", r.energy.lost},
-          {"energy_imbalance_J", r.energy.imbalance()},
-          {"max_peak_C", maxOf(r.peak)},
-          {"max_interpass_C", maxOf(r.interpass)},
-          {"n_points_molten_below_at_interpass", aboveMeltAtInterpass},
-          {"n_nodes", r.nodes},
-          {"n_elements", r.elements},
-          {"n_steps", r.steps},
-          {"simulated_time_s", r.simulatedTime},
-          {"mean_unknowns_per_step", r.meanWindow},
-          {"mean_solver_iterations", r.solverIterations},
-          {"timings_s", {{"mesh", meshSeconds}, {"simulation", r.seconds}, {"solver", r.solverSeconds}}}};
+  return {
+      {"material",
+       {{"name", s.material.name},
+        {"density_kg_m3", s.material.density},
+        {"conductivity_W_mK", s.material.conductivity},
+        {"specific_heat_J_kgK", s.material.specificHeat},
+        {"melting_C", s.material.meltingTemperature},
+        {"source", s.material.source}}},
+      {"power_W", s.power},
+      {"scheme", s.scheme == ThermalScheme::CrankNicolson ? "crank_nicolson" : "implicit_euler"},
+      {"time_step_s", s.timeStep > 0.0 ? nlohmann::json(s.timeStep) : nlohmann::json("auto")},
+      {"sub_segments", m.subSegments},
+      {"divisions", m.divisions},
+      {"substrate_z_mm", m.substrateZ},
+      {"shell_thickness_mm", m.thickness},
+      {"h_air_W_m2K", s.films.air},
+      {"h_substrate_W_m2K", s.films.substrate},
+      {"energy_in_J", r.energy.in},
+      {"energy_stored_J", r.energy.stored},
+      {"energy_lost_J", r.energy.lost},
+      {"energy_imbalance_J", r.energy.imbalance()},
+      {"max_peak_C", maxOf(r.peak)},
+      {"max_interpass_C", maxOf(r.interpass)},
+      {"n_points_molten_below_at_interpass", aboveMeltAtInterpass},
+      {"max_pool_length_mm", maxOf(study.poolLength)},
+      {"max_bond", maxOf(study.bond)},
+      {"bond_threshold", settings.bondThreshold},
+      {"n_risk_points", study.riskPoints},
+      {"n_nodes", r.nodes},
+      {"n_elements", r.elements},
+      {"n_steps", r.steps},
+      {"simulated_time_s", r.simulatedTime},
+      {"mean_unknowns_per_step", r.meanWindow},
+      {"mean_solver_iterations", r.solverIterations},
+      {"timings_s", {{"mesh", study.meshSeconds}, {"simulation", r.seconds}, {"solver", r.solverSeconds}}}};
 }
 
 constexpr const char* kHelp =
@@ -207,8 +220,9 @@ int cmdThermal(const std::vector<std::string>& argv)
   }
   const bool timing = args.takeSwitch("--timing");
   const std::string outDir = args.takeOption("-o");
-  ThermalSettings settings;
-  ThermalMeshSettings mesh;
+  ThermalStudySettings study;
+  ThermalSettings& settings = study.solver;
+  ThermalMeshSettings& mesh = study.mesh;
   if (const std::string name = args.takeOption("--material"); !name.empty())
     settings.material = thermalMaterialPreset(name);
   settings.power = arcPowerFrom(args);
@@ -244,15 +258,13 @@ int cmdThermal(const std::vector<std::string>& argv)
                                      : positiveValue("--bead-width", beadWidth, "mm");
   mesh.substrateZ = substrateZ.empty() ? substratePlaneOf(source.trajectory)
                                        : finiteNumberFlag("--substrate-z", substrateZ, "--substrate-z 0");
-  const auto start = std::chrono::steady_clock::now();
-  const ThermalMesh shell = buildThermalMesh(source.trajectory, mesh);
-  const double meshSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   NullProgress progress;
-  const ThermalResult result = simulateThermal(shell, settings, progress);
+  const ThermalStudy thermal = runThermalStudy(source.trajectory, study, progress);
+  const ThermalResult& result = thermal.result;
 
   // Everything is computed before the first file is written.
-  const nlohmann::json report = thermalJson(result, settings, mesh, meshSeconds);
-  writeFileAtomically(fs::path(outDir) / "thermal_points.csv", pointsCsv(result));
+  const nlohmann::json report = thermalJson(thermal, study);
+  writeFileAtomically(fs::path(outDir) / "thermal_points.csv", pointsCsv(thermal));
   writeFileAtomically(fs::path(outDir) / "probes.csv", probesCsv(result));
   writeFileAtomically(fs::path(outDir) / "thermal.json", report.dump(2) + "\n");
   std::cout << "thermal: " << result.nodes << " nodes, " << result.steps << " steps, "

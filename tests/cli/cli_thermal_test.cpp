@@ -4,6 +4,7 @@
 // bad input exits 3 with nothing written, and the time step the message proposes works.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <fstream>
 #include <regex>
 #include <sstream>
@@ -82,9 +83,27 @@ TEST_F(CliThermal, EnergyPointsProbesAndLinearity)
   EXPECT_EQ(j.at("substrate_z_mm"), 0.0);  // the sample stands on z = 0
   std::string header;
   const auto points = readCsv(out / "thermal_points.csv", &header);
-  EXPECT_EQ(header, "index,peak_C,interpass_C,below_at_arrival_C,time_above_melt_s");
+  EXPECT_EQ(header, "index,peak_C,interpass_C,time_above_melt_s,bond,risk,below_at_arrival_C,pool_mm");
   ASSERT_EQ(points.size(), path.size());
-  for (const auto& row : points) EXPECT_GT(row[1], 1500.0) << "point " << row[0] << " never melted";
+  // Eq. 5.31 with G3Si1's liquid density 7200 kg/m3 and surface tension 1.6 N/m, g = 9.81: Bo / L^2
+  // lies between the vertical wall's weight 1 and the horizontal surface's e^(pi/4), per mm^2.
+  const double perSquareMm = 7200.0 * 9.81 / 1.6 * 1e-6;
+  int risky = 0;
+  for (const auto& row : points) {
+    EXPECT_GT(row[1], 1500.0) << "point " << row[0] << " never melted";
+    const double pool = row[7], bond = row[4];
+    // The arc strikes on the first point: nothing has melted yet.
+    if (row[0] > 0) {
+      EXPECT_GT(pool, 0.0) << "point " << row[0];
+    }
+    EXPECT_GE(bond, perSquareMm * pool * pool * (1.0 - 1e-9)) << "point " << row[0];
+    EXPECT_LE(bond, perSquareMm * pool * pool * std::exp(M_PI / 4.0) * (1.0 + 1e-9)) << "point " << row[0];
+    const bool liquidBelow = row[6] > 1500.0 && path.points[size_t(row[0])].revolution > 0;
+    EXPECT_EQ(row[5], (bond > j.at("bond_threshold").get<double>() || liquidBelow) ? 1.0 : 0.0)
+        << "point " << row[0];
+    risky += int(row[5]);
+  }
+  EXPECT_EQ(j.at("n_risk_points"), risky);
   const auto probes = readCsv(out / "probes.csv", &header);
   ASSERT_TRUE(std::regex_match(header, std::regex(R"(t,node_\d+_C,node_\d+_C)"))) << header;
   ASSERT_GT(probes.size(), 10u);
