@@ -15,10 +15,15 @@
 #include "spira/base/output_set.h"
 #include "spira/base/progress.h"
 #include "spira/document/document.h"
+#include "spira/document/plan_report.h"
 #include "spira/pipeline/planned_path.h"
+#include "spira/planning/plan_files.h"
 #include "spira/planning/plan_schemas.h"
 #include "spira/planning/trajectory_csv_reader.h"
+#include "spira/thermal/thermal_replan.h"
 #include "spira/thermal/thermal_study.h"
+#include "spira/thermal/thermal_vtk.h"
+#include "thermal_outputs.h"
 
 namespace fs = std::filesystem;
 
@@ -31,6 +36,8 @@ constexpr double kDefaultEfficiency = 0.8;  // GMAW/CMT arc efficiency, DuPont &
 struct ThermalSource {
   Trajectory trajectory;
   std::optional<double> beadWidth;  // mm, from a project's process settings
+  ProcessLimits limits;             // a project's, else the product's defaults
+  nlohmann::json report;            // the plan's report.json, for a re-planned one
 };
 
 ThermalSource readSource(const fs::path& input)
@@ -39,6 +46,9 @@ ThermalSource readSource(const fs::path& input)
   if (fs::is_directory(input)) {
     verifyOutputSet(input);
     s.trajectory = readTrajectoryCsv(input / "trajectory.csv");
+    if (fs::exists(input / "report.json"))
+      s.report = nlohmann::json::parse(readFile(input / "report.json"), nullptr, false);
+    if (s.report.is_discarded()) s.report = nlohmann::json::object();
     return s;
   }
   Document doc;
@@ -48,7 +58,10 @@ ThermalSource readSource(const fs::path& input)
     throw InputError("the project '" + input.string() + "' holds no planned trajectory",
                      "plan it first (Plan in Spira, or spira-cli plan PROJECT --save), then simulate it");
   s.trajectory = *planned.trajectory;
-  s.beadWidth = readPlanSections(doc.settings()->params).process.beadWidth;
+  const ProcessSettings process = readPlanSections(doc.settings()->params).process;
+  s.beadWidth = process.beadWidth;
+  s.limits = process.limits;
+  s.report = mergedPlanReport(doc.results());
   return s;
 }
 
@@ -101,103 +114,22 @@ double arcPowerFrom(Args& args)
                                      : finiteNumberFlag("--efficiency", efficiency, "--efficiency 0.8"));
 }
 
-std::string pointsCsv(const ThermalStudy& study)
-{
-  const ThermalResult& r = study.result;
-  std::string out = "index,peak_C,interpass_C,time_above_melt_s,bond,risk,below_at_arrival_C,pool_mm\n";
-  for (size_t i = 0; i < r.peak.size(); ++i) {
-    appendNumber(out, static_cast<long long>(i));
-    for (double v : {r.peak[i], r.interpass[i], r.timeAboveMelt[i], study.bond[i]}) {
-      out += ',';
-      appendNumber(out, v);
-    }
-    out += study.risk[i] ? ",1" : ",0";
-    for (double v : {r.belowAtArrival[i], study.poolLength[i]}) {
-      out += ',';
-      appendNumber(out, v);
-    }
-    out += '\n';
-  }
-  return out;
-}
-
-std::string probesCsv(const ThermalResult& r)
-{
-  std::string out = "t";
-  for (int node : r.probeNodes) out += ",node_" + std::to_string(node) + "_C";
-  out += '\n';
-  for (size_t k = 0; k < r.probeTimes.size(); ++k) {
-    appendNumber(out, r.probeTimes[k]);
-    for (const auto& history : r.probeTemperatures) {
-      out += ',';
-      appendNumber(out, history[k]);
-    }
-    out += '\n';
-  }
-  return out;
-}
-
-double maxOf(const std::vector<double>& v)
-{
-  return v.empty() ? 0.0 : *std::max_element(v.begin(), v.end());
-}
-
-nlohmann::json thermalJson(const ThermalStudy& study, const ThermalStudySettings& settings)
-{
-  const ThermalResult& r = study.result;
-  const ThermalSettings& s = settings.solver;
-  const ThermalMeshSettings& m = settings.mesh;
-  size_t aboveMeltAtInterpass = 0;
-  for (double t : r.interpass) aboveMeltAtInterpass += t >= s.material.meltingTemperature;
-  return {
-      {"material",
-       {{"name", s.material.name},
-        {"density_kg_m3", s.material.density},
-        {"conductivity_W_mK", s.material.conductivity},
-        {"specific_heat_J_kgK", s.material.specificHeat},
-        {"melting_C", s.material.meltingTemperature},
-        {"source", s.material.source}}},
-      {"power_W", s.power},
-      {"scheme", s.scheme == ThermalScheme::CrankNicolson ? "crank_nicolson" : "implicit_euler"},
-      {"time_step_s", s.timeStep > 0.0 ? nlohmann::json(s.timeStep) : nlohmann::json("auto")},
-      {"sub_segments", m.subSegments},
-      {"divisions", m.divisions},
-      {"substrate_z_mm", m.substrateZ},
-      {"shell_thickness_mm", m.thickness},
-      {"h_air_W_m2K", s.films.air},
-      {"h_substrate_W_m2K", s.films.substrate},
-      {"energy_in_J", r.energy.in},
-      {"energy_stored_J", r.energy.stored},
-      {"energy_lost_J", r.energy.lost},
-      {"energy_imbalance_J", r.energy.imbalance()},
-      {"max_peak_C", maxOf(r.peak)},
-      {"max_interpass_C", maxOf(r.interpass)},
-      {"n_points_molten_below_at_interpass", aboveMeltAtInterpass},
-      {"max_pool_length_mm", maxOf(study.poolLength)},
-      {"max_bond", maxOf(study.bond)},
-      {"bond_threshold", settings.bondThreshold},
-      {"n_risk_points", study.riskPoints},
-      {"n_nodes", r.nodes},
-      {"n_elements", r.elements},
-      {"n_steps", r.steps},
-      {"simulated_time_s", r.simulatedTime},
-      {"mean_unknowns_per_step", r.meanWindow},
-      {"mean_solver_iterations", r.solverIterations},
-      {"timings_s", {{"mesh", study.meshSeconds}, {"simulation", r.seconds}, {"solver", r.solverSeconds}}}};
-}
-
 constexpr const char* kHelp =
     "usage: spira-cli thermal PLAN_DIR|PROJECT.spira -o DIR [--material NAME] [--power W | --voltage V\n"
     "                         --current A [--efficiency E]] [--dt auto|S] [--probe X,Y,Z]...\n"
     "                         [--sub-segments K] [--divisions F] [--bead-width MM] [--substrate-z Z]\n"
-    "                         [--scheme crank-nicolson|implicit-euler] [--cooling S] [--timing]\n\n"
+    "                         [--scheme crank-nicolson|implicit-euler] [--cooling S] [--frames N]\n"
+    "                         [--interpass-max C [--remedy heat]] [--timing]\n\n"
     "Simulates the heat of the build along the planned path (docs/thermal.md): a shell of the deposit\n"
     "as thick as the bead, born where the torch lays it, heated by the arc as a moving point source,\n"
     "cooled by the air on both faces and by the substrate. Writes DIR/thermal.json (energy in, stored\n"
     "and lost, the highest peak and interpass temperatures, nodes, steps, times), DIR/thermal_points.csv\n"
     "(per planned point: peak, interpass - the lowest the deposit below it cooled to before the torch\n"
     "came back -, the temperature below at the torch's arrival, the time above melting) and\n"
-    "DIR/probes.csv (temperature against time at each --probe, the nearest node).\n\n"
+    "DIR/probes.csv (temperature against time at each --probe, the nearest node), and the field over\n"
+    "time as a ParaView series, DIR/thermal.pvd with DIR/thermal_NNNN.vtu.\n"
+    "With --interpass-max, re-plans the path until no interpass temperature exceeds the limit and\n"
+    "writes the re-planned DIR/trajectory.csv and DIR/report.json with the thermal files, as one set.\n\n"
     "  --material NAME   G3Si1 (default, the source's steel), 316L, Ti-6Al-4V, AlMg5\n"
     "  --power W         arc power reaching the part (default 1000 W, the source's base case), or\n"
     "  --voltage V --current A [--efficiency E]   its product (E default 0.8)\n"
@@ -206,10 +138,42 @@ constexpr const char* kHelp =
     "  --bead-width MM   shell thickness (default: the project's bead width, else 5.2 mm)\n"
     "  --substrate-z Z   the plate's plane (default: under the first revolution, its deposit height down)\n"
     "  --cooling S       seconds simulated after the arc stops (default 0)\n"
+    "  --frames N        frames of the field in the ParaView series (default 50; 0: none)\n"
+    "  --interpass-max C the highest interpass temperature allowed, C\n"
+    "  --remedy heat     how to re-plan: heat slows the wire feed and the travel speed together where\n"
+    "                    the limit is exceeded (same deposit, same spiral, less power; down to the\n"
+    "                    process's slowest speeds); the arc power then follows the wire feed\n"
     "Exit codes: 0 done, 2 usage, 3 bad input (unknown material, non-positive power, a time step too long\n"
-    "for the torch, a plan without process channels).\n";
+    "for the torch, a plan without process channels), 4 the interpass limit cannot be met (the best\n"
+    "re-planned path and its thermal files are still written, to inspect).\n";
 
 }  // namespace
+
+// --remedy: the remedies this version re-plans with.
+void checkRemedies(const std::string& text)
+{
+  std::stringstream in(text);
+  std::string item;
+  while (std::getline(in, item, ','))
+    if (item != "heat")
+      throw UsageError("--remedy " + item + " is not a remedy this version applies",
+                       "write --remedy heat (the deposit and dwell remedies are not available yet)");
+}
+
+void printStudy(const ThermalStudy& thermal, const ThermalSettings& settings, const nlohmann::json& report)
+{
+  const ThermalResult& result = thermal.result;
+  std::cout << "thermal: " << result.nodes << " nodes, " << result.steps << " steps, "
+            << significantText(result.simulatedTime, 4) << " s of build simulated in "
+            << significantText(result.seconds, 3) << " s\n"
+            << "peak " << significantText(report["max_peak_C"].get<double>(), 4) << " C, interpass up to "
+            << significantText(report["max_interpass_C"].get<double>(), 4) << " C (" << settings.material.name
+            << " melts at " << significantText(settings.material.meltingTemperature, 4) << " C), "
+            << thermal.riskPoints << " point(s) at risk of collapse\n"
+            << "energy: in " << significantText(result.energy.in, 4) << " J, stored "
+            << significantText(result.energy.stored, 4) << " J, lost "
+            << significantText(result.energy.lost, 4) << " J\n";
+}
 
 int cmdThermal(const std::vector<std::string>& argv)
 {
@@ -245,6 +209,16 @@ int cmdThermal(const std::vector<std::string>& argv)
   }
   if (const std::string cooling = args.takeOption("--cooling"); !cooling.empty())
     settings.coolingTime = finiteNumberFlag("--cooling", cooling, "--cooling 600");
+  study.frames = 50;
+  if (const std::string frames = args.takeOption("--frames"); !frames.empty())
+    study.frames = static_cast<int>(wholeNumberFlag("--frames", frames, 0, 10000, "--frames 50"));
+  ThermalReplanSettings replan;
+  if (const std::string limit = args.takeOption("--interpass-max"); !limit.empty())
+    replan.interpassMax = finiteNumberFlag("--interpass-max", limit, "--interpass-max 250");
+  const std::string remedy = args.takeOption("--remedy");
+  if (!remedy.empty() && replan.interpassMax == 0.0)
+    throw UsageError("--remedy needs --interpass-max", "write --interpass-max 250 --remedy heat");
+  checkRemedies(remedy);
   const auto positional = args.finish("thermal", 1, 1);
   if (outDir.empty()) throw UsageError("'thermal' needs an output folder", "write -o DIR");
   const fs::path input = positional[0];
@@ -259,27 +233,62 @@ int cmdThermal(const std::vector<std::string>& argv)
   mesh.substrateZ = substrateZ.empty() ? substratePlaneOf(source.trajectory)
                                        : finiteNumberFlag("--substrate-z", substrateZ, "--substrate-z 0");
   NullProgress progress;
-  const ThermalStudy thermal = runThermalStudy(source.trajectory, study, progress);
-  const ThermalResult& result = thermal.result;
+  const fs::path dir = outDir;
+  if (replan.interpassMax == 0.0) {
+    const ThermalStudy thermal = runThermalStudy(source.trajectory, study, progress);
+    // Everything is computed before the first file is written.
+    const nlohmann::json report = thermalJson(thermal, study);
+    std::vector<OutputFile> files{{"thermal.json", report.dump(2) + "\n"},
+                                  {"thermal_points.csv", thermalPointsCsv(thermal)},
+                                  {"probes.csv", thermalProbesCsv(thermal.result)}};
+    for (OutputFile& f : thermalTimeSeries(thermal, "thermal")) files.push_back(std::move(f));
+    replaceOutputSet(dir, OutputKind::Thermal, files);
+    printStudy(thermal, settings, report);
+    if (timing)
+      for (const auto& [stage, seconds] : report["timings_s"].items())
+        std::cout << "timing " << stage << ": " << seconds.get<double>() << " s\n";
+    std::cout << "wrote " << outDir << "/thermal.json, thermal_points.csv, probes.csv and thermal.pvd\n";
+    return kExitOk;
+  }
 
-  // Everything is computed before the first file is written.
-  const nlohmann::json report = thermalJson(thermal, study);
-  writeFileAtomically(fs::path(outDir) / "thermal_points.csv", pointsCsv(thermal));
-  writeFileAtomically(fs::path(outDir) / "probes.csv", probesCsv(result));
-  writeFileAtomically(fs::path(outDir) / "thermal.json", report.dump(2) + "\n");
-  std::cout << "thermal: " << result.nodes << " nodes, " << result.steps << " steps, "
-            << significantText(result.simulatedTime, 4) << " s of build simulated in "
-            << significantText(result.seconds, 3) << " s\n"
-            << "peak " << significantText(report["max_peak_C"].get<double>(), 4) << " C, interpass up to "
-            << significantText(report["max_interpass_C"].get<double>(), 4) << " C (" << settings.material.name
-            << " melts at " << significantText(settings.material.meltingTemperature, 4) << " C)\n"
-            << "energy: in " << significantText(result.energy.in, 4) << " J, stored "
-            << significantText(result.energy.stored, 4) << " J, lost "
-            << significantText(result.energy.lost, 4) << " J\n";
+  replan.limits = source.limits;
+  settings.powerPerWireFeed = powerPerWireFeedOf(source.trajectory, settings.power);
+  const auto start = std::chrono::steady_clock::now();
+  const ThermalReplanOutcome outcome = replanForInterpass(source.trajectory, study, replan, progress);
+  const double replanSeconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  nlohmann::json report = thermalJson(outcome.study, study);
+  report["replan"] = replanJson(outcome, replan);
+  report["timings_s"]["replan"] = replanSeconds;
+  std::vector<OutputFile> files{
+      {"trajectory.csv", trajectoryCsv(outcome.trajectory)},
+      {"report.json", replannedReport(source.report, outcome, replan).dump(2) + "\n"},
+      {"thermal.json", report.dump(2) + "\n", true},
+      {"thermal_points.csv", thermalPointsCsv(outcome.study), true},
+      {"probes.csv", thermalProbesCsv(outcome.study.result), true}};
+  for (OutputFile& f : thermalTimeSeries(outcome.study, "thermal")) {
+    f.thermal = true;
+    files.push_back(std::move(f));
+  }
+  replaceOutputSet(dir, OutputKind::Plan, files);
+  printStudy(outcome.study, settings, report);
+  std::cout << "re-planned for an interpass limit of " << significantText(replan.interpassMax, 4)
+            << " C: " << outcome.revolutionsChanged << " revolution(s) slowed (down to "
+            << significantText(100.0 * outcome.slowestFactor, 3) << " % speed), build time +"
+            << significantText(outcome.buildTimeAdded, 4) << " s, " << outcome.rounds
+            << " re-simulation(s) in " << significantText(replanSeconds, 3) << " s\n";
   if (timing)
     for (const auto& [stage, seconds] : report["timings_s"].items())
       std::cout << "timing " << stage << ": " << seconds.get<double>() << " s\n";
-  std::cout << "wrote " << outDir << "/thermal.json, thermal_points.csv and probes.csv\n";
+  std::cout << "wrote the re-planned " << outDir
+            << "/trajectory.csv and report.json with the thermal files\n";
+  if (!outcome.limitMet) {
+    std::cerr << "error: the interpass limit cannot be met: " << outcome.why << "\n"
+              << "hint: raise --interpass-max (the best reached is "
+              << significantText(report["max_interpass_C"].get<double>(), 4)
+              << " C), or lower the power or the process's slowest speeds\n";
+    return kExitInfeasible;
+  }
   return kExitOk;
 }
 

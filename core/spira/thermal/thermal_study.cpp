@@ -27,10 +27,12 @@ ThermalStudy runThermalStudy(const Trajectory& trajectory, const ThermalStudySet
   const size_t n = trajectory.points.size();
   study.bond.assign(n, 0.0);
   study.risk.assign(n, 0);
-  const double melt = solver.material.meltingTemperature;
+  const double solidus = solver.material.solidusTemperature;
   for (size_t p = 0; p < n; ++p) {
     study.bond[p] = weightedBondNumber(solver.material, study.poolLength[p], trajectory.points[p].normal);
-    const bool liquidBelow = study.mesh.pointBelowNode[p] >= 0 && study.result.belowAtArrival[p] > melt &&
+    // The pool always reaches into the layer below as the torch arrives (that is how it fuses):
+    // the risk is that layer never solidifying between the passes.
+    const bool liquidBelow = study.mesh.pointBelowNode[p] >= 0 && study.result.interpass[p] > solidus &&
                              trajectory.points[p].revolution > 0;
     study.risk[p] = char(study.bond[p] > settings.bondThreshold || liquidBelow);
     study.riskPoints += study.risk[p];

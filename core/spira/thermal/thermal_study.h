@@ -29,7 +29,7 @@ struct ThermalStudy {
   std::vector<double> poolLength;  // mm
   std::vector<double> bond;
   // A point is at risk when its pool's weighted Bond number exceeds the threshold, or when the
-  // deposit below it is still molten as the torch arrives (the pool cannot rest on it).
+  // deposit below it stayed above the solidus between the passes (the pool cannot rest on it).
   std::vector<char> risk;
   int riskPoints = 0;
   double meshSeconds = 0.0;  // wall time of building the shell
