@@ -8,7 +8,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include "builtin_plugins.h"
 #include "cli_common.h"
+#include "part_plan.h"
 #include "spira/base/atomic_file.h"
 #include "spira/base/error.h"
 #include "spira/base/number_text.h"
@@ -16,6 +18,7 @@
 #include "spira/base/progress.h"
 #include "spira/document/document.h"
 #include "spira/document/plan_report.h"
+#include "spira/document/project_file.h"
 #include "spira/pipeline/planned_path.h"
 #include "spira/planning/plan_files.h"
 #include "spira/planning/plan_schemas.h"
@@ -115,13 +118,15 @@ double arcPowerFrom(Args& args)
 }
 
 constexpr const char* kHelp =
-    "usage: spira-cli thermal PLAN_DIR|PROJECT.spira -o DIR [--material NAME] [--power W | --voltage V\n"
+    "usage: spira-cli thermal PLAN_DIR|PROJECT.spira|PART [plan flags] -o DIR [--material NAME]\n"
+    "                         [--power W | --voltage V\n"
     "                         --current A [--efficiency E]] [--dt auto|S] [--probe X,Y,Z]...\n"
     "                         [--sub-segments K] [--divisions F] [--bead-width MM] [--substrate-z Z]\n"
+    "                         [--source-radius R]\n"
     "                         [--scheme crank-nicolson|implicit-euler] [--cooling S] [--frames N]\n"
     "                         [--interpass-max C [--remedy heat]] [--timing]\n\n"
     "Simulates the heat of the build along the planned path (docs/thermal.md): a shell of the deposit\n"
-    "as thick as the bead, born where the torch lays it, heated by the arc as a moving point source,\n"
+    "as thick as the bead, born where the torch lays it, heated by the moving arc,\n"
     "cooled by the air on both faces and by the substrate. Writes DIR/thermal.json (energy in, stored\n"
     "and lost, the highest peak and interpass temperatures, nodes, steps, times), DIR/thermal_points.csv\n"
     "(per planned point: peak, interpass - the lowest the deposit below it cooled to before the torch\n"
@@ -129,7 +134,9 @@ constexpr const char* kHelp =
     "DIR/probes.csv (temperature against time at each --probe, the nearest node), and the field over\n"
     "time as a ParaView series, DIR/thermal.pvd with DIR/thermal_NNNN.vtu.\n"
     "With --interpass-max, re-plans the path until no interpass temperature exceeds the limit and\n"
-    "writes the re-planned DIR/trajectory.csv and DIR/report.json with the thermal files, as one set.\n\n"
+    "writes the re-planned DIR/trajectory.csv and DIR/report.json with the thermal files, as one set.\n"
+    "A PART file (mesh or CAD) is planned first as 'spira-cli plan' plans it, with its flags (below);\n"
+    "its trajectory.csv and report.json are written with the thermal files.\n\n"
     "  --material NAME   G3Si1 (default, the source's steel), 316L, Ti-6Al-4V, AlMg5\n"
     "  --power W         arc power reaching the part (default 1000 W, the source's base case), or\n"
     "  --voltage V --current A [--efficiency E]   its product (E default 0.8)\n"
@@ -137,6 +144,8 @@ constexpr const char* kHelp =
     "  --sub-segments K  mesh sub-segments per planned segment (default 1); --divisions F across a layer\n"
     "  --bead-width MM   shell thickness (default: the project's bead width, else 5.2 mm)\n"
     "  --substrate-z Z   the plate's plane (default: under the first revolution, its deposit height down)\n"
+    "  --source-radius R the arc as a Gaussian flux of radius R, mm (default half the bead width);\n"
+    "                    0: the source's point load (peaks and pool then depend on the mesh)\n"
     "  --cooling S       seconds simulated after the arc stops (default 0)\n"
     "  --frames N        frames of the field in the ParaView series (default 50; 0: none)\n"
     "  --interpass-max C the highest interpass temperature allowed, C\n"
@@ -145,9 +154,27 @@ constexpr const char* kHelp =
     "                    process's slowest speeds); the arc power then follows the wire feed\n"
     "Exit codes: 0 done, 2 usage, 3 bad input (unknown material, non-positive power, a time step too long\n"
     "for the torch, a plan without process channels), 4 the interpass limit cannot be met (the best\n"
-    "re-planned path and its thermal files are still written, to inspect).\n";
+    "re-planned path and its thermal files are still written, to inspect) or the planned PART is not\n"
+    "feasible.\n\n"
+    "Plan flags, for a PART:\n"
+    "  --strategy NAME    the decomposition (default isovalue); --no-mid-surface refuses a solid\n";
 
 }  // namespace
+
+// Whether the command names a part file: no plan folder and no project among its arguments (the
+// flags' values are numbers and names, never folders).
+bool isPartInput(const std::vector<std::string>& rest)
+{
+  for (const std::string& a : rest) {
+    std::error_code ec;
+    if (fs::is_directory(a, ec) || fs::path(a).extension() == kProjectExtension) return false;
+  }
+  for (const std::string& a : rest) {
+    std::error_code ec;
+    if (a.rfind("-", 0) != 0 && fs::is_regular_file(a, ec)) return true;
+  }
+  return false;
+}
 
 // --remedy: the remedies this version re-plans with.
 void checkRemedies(const std::string& text)
@@ -179,7 +206,8 @@ int cmdThermal(const std::vector<std::string>& argv)
 {
   Args args = splitArgs(argv);
   if (args.takeSwitch("--help")) {
-    std::cout << kHelp;
+    const PartPlanFlags flags(builtinRegistry());
+    std::cout << kHelp << kPlacementHelp << paramFlagsHelp(flags.targets());
     return kExitOk;
   }
   const bool timing = args.takeSwitch("--timing");
@@ -199,7 +227,8 @@ int cmdThermal(const std::vector<std::string>& argv)
   if (const std::string f = args.takeOption("--divisions"); !f.empty())
     mesh.divisions = static_cast<int>(wholeNumberFlag("--divisions", f, 1, 16, "--divisions 2"));
   const std::string beadWidth = args.takeOption("--bead-width"),
-                    substrateZ = args.takeOption("--substrate-z");
+                    substrateZ = args.takeOption("--substrate-z"),
+                    radius = args.takeOption("--source-radius");
   if (const std::string scheme = args.takeOption("--scheme"); !scheme.empty()) {
     if (scheme == "implicit-euler")
       settings.scheme = ThermalScheme::ImplicitEuler;
@@ -219,77 +248,104 @@ int cmdThermal(const std::vector<std::string>& argv)
   if (!remedy.empty() && replan.interpassMax == 0.0)
     throw UsageError("--remedy needs --interpass-max", "write --interpass-max 250 --remedy heat");
   checkRemedies(remedy);
+  // A part file is planned first, with the flags of 'plan'; a plan folder or a project is read.
+  const PluginRegistry& registry = builtinRegistry();
+  std::optional<PartPlanFlags> partFlags;
+  if (isPartInput(args.rest)) {
+    partFlags.emplace(registry);
+    partFlags->take(args);
+    args.rest = takeParamFlags(args.rest, partFlags->targets());
+  }
   const auto positional = args.finish("thermal", 1, 1);
   if (outDir.empty()) throw UsageError("'thermal' needs an output folder", "write -o DIR");
   const fs::path input = positional[0];
   if (!fs::exists(input))
     throw InputError("'" + input.string() + "' does not exist",
-                     "give the -o folder of 'spira-cli plan' or a planned .spira project");
+                     "give a part file, the -o folder of 'spira-cli plan' or a planned .spira project");
   ensureWritableDirectory(outDir);
 
-  const ThermalSource source = readSource(input);
+  NullProgress progress;
+  ThermalSource source;
+  bool planFeasible = true;
+  if (partFlags) {
+    if (!substrateZ.empty())
+      partFlags->placement.substrateZ = finiteNumberFlag("--substrate-z", substrateZ, "--substrate-z 0");
+    PlannedPart part = planPartFile(registry, input.string(), *partFlags, nullptr, false, progress);
+    const PlannedPath planned = plannedPathOf(part.plan.results);
+    source.trajectory = *planned.trajectory;
+    const ProcessSettings process = readPlanSections(partFlags->planFlags.values).process;
+    source.beadWidth = process.beadWidth;
+    source.limits = process.limits;
+    source.report = std::move(part.plan.report);
+    planFeasible = part.plan.feasible;
+    std::cout << "planned " << input.filename().string() << ": " << source.trajectory.size() << " points, "
+              << (planFeasible ? "feasible" : "INFEASIBLE (see report.json)") << "\n";
+  } else {
+    source = readSource(input);
+  }
   mesh.thickness = beadWidth.empty() ? source.beadWidth.value_or(ProcessSettings{}.beadWidth)
                                      : positiveValue("--bead-width", beadWidth, "mm");
   mesh.substrateZ = substrateZ.empty() ? substratePlaneOf(source.trajectory)
                                        : finiteNumberFlag("--substrate-z", substrateZ, "--substrate-z 0");
-  NullProgress progress;
-  const fs::path dir = outDir;
-  if (replan.interpassMax == 0.0) {
-    const ThermalStudy thermal = runThermalStudy(source.trajectory, study, progress);
-    // Everything is computed before the first file is written.
-    const nlohmann::json report = thermalJson(thermal, study);
-    std::vector<OutputFile> files{{"thermal.json", report.dump(2) + "\n"},
-                                  {"thermal_points.csv", thermalPointsCsv(thermal)},
-                                  {"probes.csv", thermalProbesCsv(thermal.result)}};
-    for (OutputFile& f : thermalTimeSeries(thermal, "thermal")) files.push_back(std::move(f));
-    replaceOutputSet(dir, OutputKind::Thermal, files);
-    printStudy(thermal, settings, report);
-    if (timing)
-      for (const auto& [stage, seconds] : report["timings_s"].items())
-        std::cout << "timing " << stage << ": " << seconds.get<double>() << " s\n";
-    std::cout << "wrote " << outDir << "/thermal.json, thermal_points.csv, probes.csv and thermal.pvd\n";
-    return kExitOk;
-  }
+  settings.sourceRadius = radius.empty() ? 0.5 * mesh.thickness
+                                         : finiteNumberFlag("--source-radius", radius, "--source-radius 2.6");
 
-  replan.limits = source.limits;
-  settings.powerPerWireFeed = powerPerWireFeedOf(source.trajectory, settings.power);
+  // Everything is computed before the first file is written.
   const auto start = std::chrono::steady_clock::now();
-  const ThermalReplanOutcome outcome = replanForInterpass(source.trajectory, study, replan, progress);
-  const double replanSeconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  nlohmann::json report = thermalJson(outcome.study, study);
-  report["replan"] = replanJson(outcome, replan);
-  report["timings_s"]["replan"] = replanSeconds;
-  std::vector<OutputFile> files{
-      {"trajectory.csv", trajectoryCsv(outcome.trajectory)},
-      {"report.json", replannedReport(source.report, outcome, replan).dump(2) + "\n"},
-      {"thermal.json", report.dump(2) + "\n", true},
-      {"thermal_points.csv", thermalPointsCsv(outcome.study), true},
-      {"probes.csv", thermalProbesCsv(outcome.study.result), true}};
-  for (OutputFile& f : thermalTimeSeries(outcome.study, "thermal")) {
-    f.thermal = true;
+  std::optional<ThermalReplanOutcome> outcome;
+  ThermalStudy thermal;
+  if (replan.interpassMax > 0.0) {
+    replan.limits = source.limits;
+    settings.powerPerWireFeed = powerPerWireFeedOf(source.trajectory, settings.power);
+    outcome = replanForInterpass(source.trajectory, study, replan, progress);
+    thermal = std::move(outcome->study);
+  } else {
+    thermal = runThermalStudy(source.trajectory, study, progress);
+  }
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  nlohmann::json report = thermalJson(thermal, study);
+  if (outcome) {
+    report["replan"] = replanJson(*outcome, replan, thermal);
+    report["timings_s"]["replan"] = seconds;
+  }
+  // A planned part or a re-planned path is written with its thermal history, as one plan set.
+  const bool withPlan = partFlags || outcome;
+  std::vector<OutputFile> files;
+  if (withPlan) {
+    files.push_back({"trajectory.csv", trajectoryCsv(outcome ? outcome->trajectory : source.trajectory)});
+    const nlohmann::json planReport =
+        outcome ? replannedReport(source.report, *outcome, replan, thermal) : source.report;
+    files.push_back({"report.json", planReport.dump(2) + "\n"});
+  }
+  files.push_back({"thermal.json", report.dump(2) + "\n", withPlan});
+  files.push_back({"thermal_points.csv", thermalPointsCsv(thermal), withPlan});
+  files.push_back({"probes.csv", thermalProbesCsv(thermal.result), withPlan});
+  for (OutputFile& f : thermalTimeSeries(thermal, "thermal")) {
+    f.thermal = withPlan;
     files.push_back(std::move(f));
   }
-  replaceOutputSet(dir, OutputKind::Plan, files);
-  printStudy(outcome.study, settings, report);
-  std::cout << "re-planned for an interpass limit of " << significantText(replan.interpassMax, 4)
-            << " C: " << outcome.revolutionsChanged << " revolution(s) slowed (down to "
-            << significantText(100.0 * outcome.slowestFactor, 3) << " % speed), build time +"
-            << significantText(outcome.buildTimeAdded, 4) << " s, " << outcome.rounds
-            << " re-simulation(s) in " << significantText(replanSeconds, 3) << " s\n";
+  replaceOutputSet(outDir, withPlan ? OutputKind::Plan : OutputKind::Thermal, files);
+
+  printStudy(thermal, settings, report);
+  if (outcome)
+    std::cout << "re-planned for an interpass limit of " << significantText(replan.interpassMax, 4)
+              << " C: " << outcome->revolutionsChanged << " revolution(s) slowed (down to "
+              << significantText(100.0 * outcome->slowestFactor, 3) << " % speed), build time +"
+              << significantText(outcome->buildTimeAdded, 4) << " s, " << outcome->rounds
+              << " re-simulation(s) in " << significantText(seconds, 3) << " s\n";
   if (timing)
-    for (const auto& [stage, seconds] : report["timings_s"].items())
-      std::cout << "timing " << stage << ": " << seconds.get<double>() << " s\n";
-  std::cout << "wrote the re-planned " << outDir
-            << "/trajectory.csv and report.json with the thermal files\n";
-  if (!outcome.limitMet) {
-    std::cerr << "error: the interpass limit cannot be met: " << outcome.why << "\n"
+    for (const auto& [stage, t] : report["timings_s"].items())
+      std::cout << "timing " << stage << ": " << t.get<double>() << " s\n";
+  std::cout << "wrote " << (withPlan ? outDir + "/trajectory.csv, report.json, " : outDir + "/")
+            << "thermal.json, thermal_points.csv, probes.csv and thermal.pvd\n";
+  if (outcome && !outcome->limitMet) {
+    std::cerr << "error: the interpass limit cannot be met: " << outcome->why << "\n"
               << "hint: raise --interpass-max (the best reached is "
               << significantText(report["max_interpass_C"].get<double>(), 4)
               << " C), or lower the power or the process's slowest speeds\n";
     return kExitInfeasible;
   }
-  return kExitOk;
+  return planFeasible ? kExitOk : kExitInfeasible;
 }
 
 }  // namespace spira::cli

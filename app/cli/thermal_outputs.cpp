@@ -94,7 +94,8 @@ nlohmann::json thermalJson(const ThermalStudy& study, const ThermalStudySettings
       {"timings_s", {{"mesh", study.meshSeconds}, {"simulation", r.seconds}, {"solver", r.solverSeconds}}}};
 }
 
-nlohmann::json replanJson(const ThermalReplanOutcome& o, const ThermalReplanSettings& replan)
+nlohmann::json replanJson(const ThermalReplanOutcome& o, const ThermalReplanSettings& replan,
+                          const ThermalStudy& final)
 {
   nlohmann::json j = {{"interpass_max_C", replan.interpassMax},
                       {"remedy", "heat"},
@@ -104,13 +105,13 @@ nlohmann::json replanJson(const ThermalReplanOutcome& o, const ThermalReplanSett
                       {"slowest_speed_factor", o.slowestFactor},
                       {"build_time_added_s", o.buildTimeAdded},
                       {"re_simulations", o.rounds},
-                      {"final_max_interpass_C", maxOf(o.study.result.interpass)}};
+                      {"final_max_interpass_C", maxOf(final.result.interpass)}};
   if (!o.why.empty()) j["why_not_met"] = o.why;
   return j;
 }
 
 nlohmann::json replannedReport(nlohmann::json report, const ThermalReplanOutcome& o,
-                               const ThermalReplanSettings& replan)
+                               const ThermalReplanSettings& replan, const ThermalStudy& final)
 {
   double tsMin = 1e300, tsMax = 0.0, wfsMin = 1e300, wfsMax = 0.0;
   for (const TrajectoryPoint& p : o.trajectory.points) {
@@ -128,7 +129,7 @@ nlohmann::json replannedReport(nlohmann::json report, const ThermalReplanOutcome
     p["wfs_min_m_min"] = wfsMin * 60.0 / 1000.0;
     p["wfs_max_m_min"] = wfsMax * 60.0 / 1000.0;
   }
-  report["thermal_replan"] = replanJson(o, replan);
+  report["thermal_replan"] = replanJson(o, replan, final);
   return report;
 }
 

@@ -17,9 +17,11 @@ std::string thermalProbesCsv(const ThermalResult& result);
 // thermal.json: the settings, the energy balance, the extremes, the risk count, sizes and times.
 nlohmann::json thermalJson(const ThermalStudy& study, const ThermalStudySettings& settings);
 // What re-planning adds to thermal.json and to the re-planned report.json.
-nlohmann::json replanJson(const ThermalReplanOutcome& outcome, const ThermalReplanSettings& replan);
+// `final` is the re-planned path's study (the outcome's, moved out of it).
+nlohmann::json replanJson(const ThermalReplanOutcome& outcome, const ThermalReplanSettings& replan,
+                          const ThermalStudy& final);
 // The plan's report.json updated for the re-planned path: build time, speed ranges, "thermal_replan".
 nlohmann::json replannedReport(nlohmann::json report, const ThermalReplanOutcome& outcome,
-                               const ThermalReplanSettings& replan);
+                               const ThermalReplanSettings& replan, const ThermalStudy& final);
 
 }  // namespace spira::cli

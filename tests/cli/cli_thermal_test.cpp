@@ -216,5 +216,25 @@ TEST_F(CliThermal, ReplansToAnInterpassLimit)
   EXPECT_NE(r.err.find("--remedy dwell"), std::string::npos) << r.err;
 }
 
+// A part file is planned as 'plan' plans it (same flags, same path) and simulated; the plan is
+// written with its thermal history.
+TEST_F(CliThermal, PlansAPartFileFirst)
+{
+  const fs::path out = tmp_ / "part";
+  const std::string part = (sourceDir() / "resources/samples/open_cylinder.stl").string();
+  CliRun r = runCli({"thermal", part, "--points-per-rev", "90", "-o", out.string(), "--frames", "0"});
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.out.find("planned open_cylinder.stl: 4500 points, feasible"), std::string::npos) << r.out;
+  EXPECT_EQ(readBytes(out / "trajectory.csv"), readBytes(plan() / "trajectory.csv"));
+  EXPECT_EQ(nlohmann::json::parse(readBytes(out / "report.json")).at("n_points"), 4500);
+  const fs::path fromPlan = tmp_ / "from_plan";
+  ASSERT_EQ(runCli({"thermal", plan().string(), "-o", fromPlan.string(), "--frames", "0"}).exitCode, 0);
+  EXPECT_EQ(readBytes(out / "thermal_points.csv"), readBytes(fromPlan / "thermal_points.csv"));
+
+  r = runCli({"thermal", part, "--points-per-rev", "zero", "-o", out.string()});
+  EXPECT_EQ(r.exitCode, 2) << r.err;
+  EXPECT_NE(r.err.find("points_per_rev"), std::string::npos) << r.err;
+}
+
 }  // namespace
 }  // namespace spira::test

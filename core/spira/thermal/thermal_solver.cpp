@@ -12,6 +12,7 @@
 
 #include "spira/base/error.h"
 #include "spira/base/number_text.h"
+#include "spira/thermal/thermal_source.h"
 
 namespace spira {
 namespace {
@@ -58,6 +59,9 @@ void validate(const ThermalMesh& mesh, const ThermalSettings& s)
   if (s.films.air < 0.0 || s.films.substrate < 0.0)
     throw InputError("film coefficients cannot be negative", "35 W/(m2 K) for air, 2000 for the substrate");
   if (s.coolingTime < 0.0 || s.timeStep < 0.0) throw InputError("times cannot be negative");
+  if (!(s.sourceRadius >= 0.0) || !std::isfinite(s.sourceRadius))
+    throw InputError("the arc's radius must be positive, or 0 for a point source",
+                     "half the bead width, e.g. 2.6 mm");
   if (s.timeStep > 0.0 && (s.power > 0.0 || s.powerPerWireFeed > 0.0)) {
     // The source must not cross more than one shell thickness in a step.
     double fastest = 0.0;
@@ -149,41 +153,6 @@ class PrefixSolver {
   std::vector<double> a_, inverseDiagonal_, r_, z_, p_, q_;
 };
 
-// The energy (J) the moving source puts into each node over [t0, t1]: along each heat segment the
-// load is split linearly between its two ends by the torch's position (Eq. 5.28, with the weights the
-// right way round), integrated over the time the torch spends on it, so no segment is skipped.
-class SourceLoad {
- public:
-  SourceLoad(const ThermalMesh& mesh, double power, double perWireFeed)
-      : mesh_(mesh), power_(power), perWireFeed_(perWireFeed)
-  {
-  }
-
-  double add(double t0, double t1, std::vector<double>& energy)
-  {
-    const auto& h = mesh_.heatTime;
-    while (segment_ + 1 < h.size() && h[segment_ + 1] <= t0) ++segment_;
-    double total = 0.0;
-    for (size_t i = segment_; i + 1 < h.size() && h[i] < t1; ++i) {
-      const double ta = h[i], tb = h[i + 1];
-      const double power = perWireFeed_ > 0.0 ? perWireFeed_ * mesh_.heatWireFeed[i] : power_;
-      if (!mesh_.heatArcOn[i] || !(tb > ta) || power == 0.0) continue;
-      const double s0 = std::max(ta, t0), s1 = std::min(tb, t1);
-      if (!(s1 > s0)) continue;
-      const double towardB = ((s1 - ta) * (s1 - ta) - (s0 - ta) * (s0 - ta)) / (2.0 * (tb - ta));
-      energy[size_t(mesh_.heatNode[i])] += power * (s1 - s0 - towardB);
-      energy[size_t(mesh_.heatNode[i + 1])] += power * towardB;
-      total += power * (s1 - s0);
-    }
-    return total;
-  }
-
- private:
-  const ThermalMesh& mesh_;
-  double power_, perWireFeed_;
-  size_t segment_ = 0;
-};
-
 }  // namespace
 
 ThermalResult simulateThermal(const ThermalMesh& mesh, const ThermalSettings& settings, Progress& progress)
@@ -255,7 +224,7 @@ ThermalResult simulateThermal(const ThermalMesh& mesh, const ThermalSettings& se
   size_t nextPoint = 0;
 
   PrefixSolver solver(system);
-  SourceLoad source(mesh, settings.power, settings.powerPerWireFeed);
+  SourceLoad source(mesh, settings);
   size_t born = 0, reached = 0;
   int window = 0;
   double iterations = 0.0, windowSum = 0.0;
@@ -287,7 +256,7 @@ ThermalResult simulateThermal(const ThermalMesh& mesh, const ThermalSettings& se
     if (window == 0) continue;
 
     std::fill(energy.begin(), energy.begin() + window, 0.0);
-    res.energy.in += source.add(ta, tb, energy);
+    res.energy.in += source.add(ta, tb, deposited, energy);
     // ([C] + theta dt [K]) T1 = ([C] - (1 - theta) dt [K]) T0 + dt F + source energy; nodes past the
     // window keep their temperature, their coupling moved to the right-hand side.
     for (int i = 0; i < window; ++i) {
