@@ -122,7 +122,7 @@ constexpr const char* kHelp =
     "                         [--power W | --voltage V\n"
     "                         --current A [--efficiency E]] [--dt auto|S] [--probe X,Y,Z]...\n"
     "                         [--sub-segments K] [--divisions F] [--bead-width MM] [--substrate-z Z]\n"
-    "                         [--source-radius R]\n"
+    "                         [--source-radius R] [--emissivity E]\n"
     "                         [--scheme crank-nicolson|implicit-euler] [--cooling S] [--frames N]\n"
     "                         [--interpass-max C [--remedy heat]] [--timing]\n\n"
     "Simulates the heat of the build along the planned path (docs/thermal.md): a shell of the deposit\n"
@@ -147,6 +147,8 @@ constexpr const char* kHelp =
     "  --source-radius R the arc as a Gaussian flux of radius R, mm (default half the bead width);\n"
     "                    0: the source's point load (peaks and pool then depend on the mesh)\n"
     "  --cooling S       seconds simulated after the arc stops (default 0)\n"
+    "  --emissivity E    radiation from both faces of the laid wall, E in [0, 1] (default 0: none,\n"
+    "                    the source's model)\n"
     "  --frames N        frames of the field in the ParaView series (default 50; 0: none)\n"
     "  --interpass-max C the highest interpass temperature allowed, C\n"
     "  --remedy heat     how to re-plan: heat slows the wire feed and the travel speed together where\n"
@@ -217,6 +219,10 @@ int cmdThermal(const std::vector<std::string>& argv)
   ThermalMeshSettings& mesh = study.mesh;
   if (const std::string name = args.takeOption("--material"); !name.empty())
     settings.material = thermalMaterialPreset(name);
+  if (const std::string e = args.takeOption("--emissivity"); !e.empty()) {
+    settings.material.emissivity = finiteNumberFlag("--emissivity", e, "--emissivity 0.8");
+    validateThermalMaterial(settings.material);
+  }
   settings.power = arcPowerFrom(args);
   if (const std::string dt = args.takeOption("--dt"); !dt.empty() && dt != "auto")
     settings.timeStep = positiveValue("--dt", dt, "s");

@@ -113,6 +113,13 @@ TEST_F(CliThermal, EnergyPointsProbesAndLinearity)
   for (const auto& row : probes) topPeak = std::max(topPeak, row[2]);
   EXPECT_GT(topPeak, 1500.0);
 
+  // Radiation only takes heat away.
+  const fs::path radiating = tmp_ / "radiating";
+  ASSERT_EQ(runCli({"thermal", plan().string(), "-o", radiating.string(), "--emissivity", "0.8"}).exitCode,
+            0);
+  EXPECT_LT(thermal(radiating).at("max_peak_C").get<double>(), j.at("max_peak_C").get<double>() - 100.0);
+  EXPECT_EQ(thermal(radiating).at("material").at("emissivity"), 0.8);
+
   const fs::path twice = tmp_ / "twice";
   ASSERT_EQ(runCli({"thermal", plan().string(), "-o", twice.string(), "--power", "2000"}).exitCode, 0);
   const double rise = j.at("max_peak_C").get<double>() - 20.0;
@@ -145,6 +152,9 @@ TEST_F(CliThermal, BadInputExitsThreeWithNothingWritten)
   EXPECT_EQ(r.exitCode, 3) << r.err;
   r = runCli({"thermal", plan().string(), "-o", out.string(), "--voltage", "18"});
   EXPECT_EQ(r.exitCode, 2) << r.err;
+  r = runCli({"thermal", plan().string(), "-o", out.string(), "--emissivity", "1.5"});
+  EXPECT_EQ(r.exitCode, 3) << r.err;
+  EXPECT_NE(r.err.find("emissivity must be in [0, 1]"), std::string::npos) << r.err;
   r = runCli({"thermal", plan().string()});
   EXPECT_EQ(r.exitCode, 2) << r.err;
   // A step the torch outruns: refused, with the longest that resolves it, which then works.
