@@ -100,10 +100,15 @@ double positiveValue(const std::string& flag, const std::string& text, const std
   return v;
 }
 
-double arcPowerFrom(Args& args)
+// The arc power of --power or --voltage/--current/--efficiency; none of them may be given with
+// --energy-per-wire (`perWire`).
+double arcPowerFrom(Args& args, bool perWire)
 {
   const std::string power = args.takeOption("--power"), voltage = args.takeOption("--voltage"),
                     current = args.takeOption("--current"), efficiency = args.takeOption("--efficiency");
+  if (perWire && (!power.empty() || !voltage.empty() || !current.empty() || !efficiency.empty()))
+    throw UsageError("--energy-per-wire and --power/--voltage/--current both give the arc power",
+                     "give --power W, --voltage V --current A [--efficiency E], or --energy-per-wire J");
   if (!power.empty() && (!voltage.empty() || !current.empty() || !efficiency.empty()))
     throw UsageError("--power and --voltage/--current/--efficiency both give the arc power",
                      "give --power W, or --voltage V --current A [--efficiency E]");
@@ -119,8 +124,8 @@ double arcPowerFrom(Args& args)
 
 constexpr const char* kHelp =
     "usage: spira-cli thermal PLAN_DIR|PROJECT.spira|PART [plan flags] -o DIR [--material NAME]\n"
-    "                         [--power W | --voltage V\n"
-    "                         --current A [--efficiency E]] [--dt auto|S] [--probe X,Y,Z]...\n"
+    "                         [--power W | --voltage V --current A [--efficiency E] |\n"
+    "                         --energy-per-wire J] [--dt auto|S] [--probe X,Y,Z]...\n"
     "                         [--sub-segments K] [--divisions F] [--bead-width MM] [--substrate-z Z]\n"
     "                         [--source-radius R] [--emissivity E]\n"
     "                         [--scheme crank-nicolson|implicit-euler] [--cooling S] [--frames N]\n"
@@ -139,7 +144,9 @@ constexpr const char* kHelp =
     "its trajectory.csv and report.json are written with the thermal files.\n\n"
     "  --material NAME   G3Si1 (default, the source's steel), 316L, Ti-6Al-4V, AlMg5\n"
     "  --power W         arc power reaching the part (default 1000 W, the source's base case), or\n"
-    "  --voltage V --current A [--efficiency E]   its product (E default 0.8)\n"
+    "  --voltage V --current A [--efficiency E]   its product (E default 0.8), or\n"
+    "  --energy-per-wire J   the arc's energy per mm of wire fed (a synergic line): the power follows\n"
+    "                    the wire feed point by point\n"
     "  --dt auto|S       time step; auto (default) moves the torch one sub-segment per step\n"
     "  --sub-segments K  mesh sub-segments per planned segment (default 1); --divisions F across a layer\n"
     "  --bead-width MM   shell thickness (default: the project's bead width, else 5.2 mm)\n"
@@ -223,7 +230,9 @@ int cmdThermal(const std::vector<std::string>& argv)
     settings.material.emissivity = finiteNumberFlag("--emissivity", e, "--emissivity 0.8");
     validateThermalMaterial(settings.material);
   }
-  settings.power = arcPowerFrom(args);
+  const std::string perWire = args.takeOption("--energy-per-wire");
+  settings.power = arcPowerFrom(args, !perWire.empty());
+  if (!perWire.empty()) settings.powerPerWireFeed = positiveValue("--energy-per-wire", perWire, "J/mm");
   if (const std::string dt = args.takeOption("--dt"); !dt.empty() && dt != "auto")
     settings.timeStep = positiveValue("--dt", dt, "s");
   for (std::string p = args.takeOption("--probe"); !p.empty(); p = args.takeOption("--probe"))
@@ -302,7 +311,8 @@ int cmdThermal(const std::vector<std::string>& argv)
   ThermalStudy thermal;
   if (replan.interpassMax > 0.0) {
     replan.limits = source.limits;
-    settings.powerPerWireFeed = powerPerWireFeedOf(source.trajectory, settings.power);
+    if (!(settings.powerPerWireFeed > 0.0))
+      settings.powerPerWireFeed = powerPerWireFeedOf(source.trajectory, settings.power);
     outcome = replanForInterpass(source.trajectory, study, replan, progress);
     thermal = std::move(outcome->study);
   } else {

@@ -113,6 +113,15 @@ TEST_F(CliThermal, EnergyPointsProbesAndLinearity)
   for (const auto& row : probes) topPeak = std::max(topPeak, row[2]);
   EXPECT_GT(topPeak, 1500.0);
 
+  // A synergic line's energy per mm of wire: the plan feeds a constant 2.3 m/min, so 1000 W is
+  // 1000 / (2300 / 60) J/mm, and the energy in is the same.
+  const fs::path perWire = tmp_ / "per_wire";
+  ASSERT_EQ(runCli({"thermal", plan().string(), "-o", perWire.string(), "--energy-per-wire",
+                    std::to_string(1000.0 / (2300.0 / 60.0))})
+                .exitCode,
+            0);
+  EXPECT_NEAR(thermal(perWire).at("energy_in_J").get<double>(), in, 1e-5 * in);
+
   // Radiation only takes heat away.
   const fs::path radiating = tmp_ / "radiating";
   ASSERT_EQ(runCli({"thermal", plan().string(), "-o", radiating.string(), "--emissivity", "0.8"}).exitCode,
@@ -152,6 +161,10 @@ TEST_F(CliThermal, BadInputExitsThreeWithNothingWritten)
   EXPECT_EQ(r.exitCode, 3) << r.err;
   r = runCli({"thermal", plan().string(), "-o", out.string(), "--voltage", "18"});
   EXPECT_EQ(r.exitCode, 2) << r.err;
+  r = runCli({"thermal", plan().string(), "-o", out.string(), "--energy-per-wire", "30", "--power", "900"});
+  EXPECT_EQ(r.exitCode, 2) << r.err;
+  r = runCli({"thermal", plan().string(), "-o", out.string(), "--energy-per-wire", "-1"});
+  EXPECT_EQ(r.exitCode, 3) << r.err;
   r = runCli({"thermal", plan().string(), "-o", out.string(), "--emissivity", "1.5"});
   EXPECT_EQ(r.exitCode, 3) << r.err;
   EXPECT_NE(r.err.find("emissivity must be in [0, 1]"), std::string::npos) << r.err;
