@@ -94,5 +94,40 @@ TEST(ThermalOutputs, FramesAndParaViewSeries)
   EXPECT_FLOAT_EQ(points[3 * 7 + 2], float(study.mesh.nodes[7].z()));
 }
 
+// The lowest temperature of the laid wall over a build and its cooling, at a fixed step.
+double lowestLaid(double step, double radius, ThermalScheme scheme)
+{
+  Trajectory t = test::cylinderWall(20.0, 8, 72, 2.0, 6.0);
+  for (TrajectoryPoint& p : t.points) p.arcOn = p.revolution != 4;
+  const ThermalMesh mesh = buildThermalMesh(t, {});
+  ThermalSettings s;
+  s.coolingTime = 60.0;
+  s.timeStep = step;
+  s.sourceRadius = radius;
+  s.scheme = scheme;
+  double lowest = 1e9;
+  s.onStep = [&](const ThermalStep& st) {
+    for (size_t v = 0; v < st.temperature.size(); ++v)
+      if (st.deposited[v]) lowest = std::min(lowest, st.temperature[v]);
+  };
+  NullProgress progress;
+  simulateThermal(mesh, s, progress);
+  return lowest;
+}
+
+// Where the arc strikes again over a cold layer, Crank-Nicolson at 0.8 s (the torch crossing 0.96
+// of the shell per step) rang to -256 C under a point load and -105 C under the Gaussian arc; the
+// longest step it now accepts, half of that, and the automatic step keep the laid wall above the
+// air and the plate, as implicit Euler does at the longest step.
+TEST(ThermalOutputs, NoLaidNodeFallsBelowAmbient)
+{
+  for (double radius : {0.0, 2.5}) {
+    EXPECT_GT(lowestLaid(0.0, radius, ThermalScheme::CrankNicolson), 20.0) << radius;
+    EXPECT_GT(lowestLaid(0.41, radius, ThermalScheme::CrankNicolson), 20.0) << radius;
+    EXPECT_GT(lowestLaid(0.8, radius, ThermalScheme::ImplicitEuler), 20.0) << radius;
+  }
+  EXPECT_THROW(lowestLaid(0.8, 0.0, ThermalScheme::CrankNicolson), InputError);
+}
+
 }  // namespace
 }  // namespace spira
