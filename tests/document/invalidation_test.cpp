@@ -92,6 +92,8 @@ TEST(Invalidation, EachSettingKindDropsExactlyItsStages)
          d.setPlanSettings(s);
        },
        before(Stage::Process)},
+      {"thermal params", [](Document& d) { d.setParam("thermal", "interpass_max", 250.0); },
+       before(Stage::Thermal)},
       {"cell", [](Document& d) { d.setCell(CellRecord()); }, before(Stage::Kinematics)},
       {"cell removed", [](Document& d) { d.clearCell(); }, before(Stage::Kinematics)},
       {"exporter params", [](Document& d) { d.setParam("export.krl", "base", std::int64_t{1}); },
@@ -144,6 +146,9 @@ TEST(Invalidation, SettingAStageResultDropsLaterStagesOnly)
         break;
       case Stage::Process:
         r.setProcess(std::make_shared<const Trajectory>());
+        break;
+      case Stage::Thermal:
+        r.setThermal(std::make_shared<const ThermalStageResult>());
         break;
       case Stage::Kinematics:
         r.setKinematics(std::make_shared<const KinematicsResult>());

@@ -20,6 +20,7 @@ enum class Input {
   ClosureFinder,    // chosen closure finder id, or the values of its section
   SpiralSection,    // "spiral" section
   ProcessSection,   // "process" section
+  ThermalSection,   // "thermal" section: the optional thermal stage and its re-planning
   Cell,             // robot, tool, positioner, axes
   ExporterSection,  // "export.*" sections
   ImporterSection,  // "import.*"/"importer.*" sections: used at import time only
@@ -38,9 +39,9 @@ const Rule kInvalidation[] = {
     {Input::PartLabel, Stage::Export},         {Input::Substrate, Stage::Field},
     {Input::Decomposer, Stage::Generatrices},  {Input::ClosureFinder, Stage::Generatrices},
     {Input::SpiralSection, Stage::Spiral},     {Input::ProcessSection, Stage::Process},
-    {Input::Cell, Stage::Kinematics},          {Input::ExporterSection, Stage::Export},
-    {Input::ImporterSection, std::nullopt},    {Input::InactiveSection, std::nullopt},
-    {Input::OtherSection, Stage::Field},
+    {Input::ThermalSection, Stage::Thermal},   {Input::Cell, Stage::Kinematics},
+    {Input::ExporterSection, Stage::Export},   {Input::ImporterSection, std::nullopt},
+    {Input::InactiveSection, std::nullopt},    {Input::OtherSection, Stage::Field},
 };
 
 std::optional<Stage> stageFor(Input input)
@@ -59,6 +60,7 @@ Input classifySection(const std::string& section, const PlanSettings& before, co
 {
   if (section == PlanSettings::kProcessSection) return Input::ProcessSection;
   if (section == PlanSettings::kSpiralSection) return Input::SpiralSection;
+  if (section == PlanSettings::kThermalSection) return Input::ThermalSection;
   if (startsWith(section, "decomposer."))
     return section == before.decomposerId || section == after.decomposerId ? Input::Decomposer
                                                                            : Input::InactiveSection;

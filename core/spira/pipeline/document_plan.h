@@ -23,7 +23,7 @@ struct PlanStageSpan {
   const char* label;
   double begin, end;
 };
-constexpr int kPlanStageCount = 6;
+constexpr int kPlanStageCount = 7;
 const std::array<PlanStageSpan, kPlanStageCount>& planStageSpans();
 // The stage index whose span holds `fraction` (the last one from its begin on).
 int planStageAt(double fraction);

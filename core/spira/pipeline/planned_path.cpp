@@ -6,7 +6,8 @@ PlannedPath plannedPathOf(const Results& results)
 {
   PlannedPath p;
   if (!results.kinematics) {
-    p.trajectory = results.process;
+    p.trajectory =
+        results.thermal && results.thermal->replanned ? results.thermal->replanned : results.process;
     return p;
   }
   p.trajectory = std::shared_ptr<const Trajectory>(results.kinematics, &results.kinematics->path);
