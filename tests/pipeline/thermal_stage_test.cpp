@@ -132,6 +132,16 @@ TEST(ThermalStage, CancelledWhileItRunsLeavesThePreviousResults)
   EXPECT_FALSE(doc.results().thermal);
 }
 
+TEST(ThermalStage, ItsProgressSpanSitsBetweenProcessAndKinematics)
+{
+  const auto& spans = planStageSpans();
+  EXPECT_STREQ(spans[kThermalPlanStage].label, "Thermal");
+  EXPECT_EQ(spans[kThermalPlanStage - 1].end, spans[kThermalPlanStage].begin);
+  EXPECT_EQ(spans[kThermalPlanStage].end, spans[kThermalPlanStage + 1].begin);
+  EXPECT_STREQ(spans[kThermalPlanStage + 1].label, "Kinematics");
+  EXPECT_EQ(planStageAt(0.85), kThermalPlanStage);
+}
+
 TEST(ThermalStage, BadSettingsAreNamed)
 {
   ParamSet values;

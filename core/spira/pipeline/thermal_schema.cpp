@@ -93,7 +93,7 @@ const ThermalBinding& thermalBinding()
           &StoredThermal::frames),
       ThermalBinding::number(
           numberParam(
-              "bond_threshold", kDefaultBondThreshold, 0.01, 1000.0, "",
+              "bond_threshold", kDefaultBondThreshold, 0.1, 100.0, "",
               text("Bond threshold",
                    "A point is at risk of collapse when its pool's weighted Bond number exceeds this.",
                    kModel)),

@@ -15,6 +15,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "spira/pipeline/thermal_schema.h"
 #include "spira/planning/plan_schemas.h"
 #include "spira/plugin/plugin_registry.h"
 #include "spira/ui/panels/param_panel.h"
@@ -71,6 +72,9 @@ PlanPanel::PlanPanel(Document& doc, const PluginRegistry& registry, QWidget* par
   connectPanel(process);
   tabs_->addTab(scrolled(spiral, tabs_), tr("Spiral"));
   tabs_->addTab(scrolled(process, tabs_), tr("Process"));
+  auto* thermal = new ParamPanel(PlanSettings::kThermalSection, thermalSchema());
+  panels_[thermal->section()] = thermal;
+  connectPanel(thermal);
 
   auto* strategy = new QWidget;
   auto* strategyLayout = new QVBoxLayout(strategy);
@@ -101,6 +105,7 @@ PlanPanel::PlanPanel(Document& doc, const PluginRegistry& registry, QWidget* par
   strategyLayout->addLayout(closureBox_);
   strategyLayout->addStretch(1);
   tabs_->addTab(scrolled(strategy, tabs_), tr("Strategy"));
+  tabs_->addTab(scrolled(thermal, tabs_), tr("Thermal"));
   layout->addWidget(tabs_, 1);
 
   connect(decomposer_, QOverload<int>::of(&QComboBox::activated), this, [this](int i) {

@@ -36,6 +36,7 @@
 #include "spira/ui/views/point_selection.h"
 #include "spira/ui/views/scene_view.h"
 #include "spira/ui/views/spiral_layer.h"
+#include "spira/ui/views/thermal_risk_zones.h"
 
 namespace spira::ui {
 
@@ -356,7 +357,9 @@ void PathInspector::updateChartCursor()
 
 void PathInspector::listOffenders(const Results& results)
 {
-  if (log_ && logList_) listOffendingPoints(*log_, *logList_, results, kPointRole, kMaxListedPoints);
+  if (!log_ || !logList_) return;
+  listOffendingPoints(*log_, *logList_, results, kPointRole, kMaxListedPoints);
+  listThermalRiskZones(*log_, *logList_, results, kPointRole, kMaxListedPoints);
 }
 
 }  // namespace spira::ui

@@ -34,6 +34,7 @@
 #include "spira/ui/views/path_layers.h"
 #include "spira/ui/views/spiral_layer.h"
 #include "spira/ui/views/substrate_grid.h"
+#include "spira/ui/views/thermal_layer.h"
 #include "spira/ui/views/vtk_mesh.h"
 
 // spira_ui is a static library: register VTK's object-factory overrides here, where the view
@@ -82,6 +83,7 @@ struct SceneView::Scene {
   std::unique_ptr<FieldLayer> field;
   std::unique_ptr<PathLayers> paths;
   std::unique_ptr<SpiralLayer> spiral;
+  std::unique_ptr<ThermalLayer> thermal;
 };
 
 SceneView::SceneView(QWidget* parent) : QWidget(parent), scene_(std::make_unique<Scene>())
@@ -185,6 +187,7 @@ SceneView::SceneView(QWidget* parent) : QWidget(parent), scene_(std::make_unique
   s.field = std::make_unique<FieldLayer>(s.renderer, s.partMapper);
   s.paths = std::make_unique<PathLayers>(s.renderer);
   s.spiral = std::make_unique<SpiralLayer>(s.renderer);
+  s.thermal = std::make_unique<ThermalLayer>(s.renderer);
   setCameraPreset(CameraPreset::Iso);
 }
 
@@ -220,6 +223,11 @@ SpiralLayer& SceneView::spiralLayer()
   return *scene_->spiral;
 }
 
+ThermalLayer& SceneView::thermalLayer()
+{
+  return *scene_->thermal;
+}
+
 void SceneView::showResults(const Results& r, const Transform& T_world_part)
 {
   Scene& s = *scene_;
@@ -239,6 +247,10 @@ void SceneView::showResults(const Results& r, const Transform& T_world_part)
   const Trajectory* path = r.process ? r.process.get() : r.spiral.get();
   s.spiral->setTrajectory(path, r.process != nullptr, planWindow(r), T_world_part);
   s.spiral->setKinematics(r.kinematics.get());
+  s.spiral->setThermal(r.thermal.get(), r.reports.thermal.get());
+  s.thermal->setResult(r.thermal, r.reports.thermal ? r.reports.thermal->meltingTemperature : 0.0,
+                       T_world_part);
+  if (!s.thermal->hasResult() && s.partStyle == PartStyle::Temperature) s.partStyle = PartStyle::Transparent;
   applyPartStyle();
   scheduleRender();
 }
@@ -259,7 +271,10 @@ void SceneView::applyPartStyle()
 {
   Scene& s = *scene_;
   const PartStyle style = s.partStyle;
-  s.part->SetVisibility(validBounds(s.partBounds) && style != PartStyle::Hidden);
+  s.part->SetVisibility(validBounds(s.partBounds) && style != PartStyle::Hidden &&
+                        style != PartStyle::Temperature);
+  s.thermal->setVisible(style == PartStyle::Temperature);
+  s.spiral->setHiddenByPart(style == PartStyle::Temperature);
   vtkProperty* p = s.part->GetProperty();
   const bool ghost = style == PartStyle::Transparent;
   p->SetOpacity(ghost ? 0.28 : 1.0);
