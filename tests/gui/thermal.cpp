@@ -113,6 +113,9 @@ TEST(ThermalGui, DomeWithTheThermalStage)
   EXPECT_TRUE(thermal->hasResult());
   EXPECT_TRUE(thermal->summaryLabel()->text().contains("°C"));
   EXPECT_TRUE(thermal->summaryLabel()->text().contains(QStringLiteral("%1 °C limit").arg(kLimit)));
+  // Nothing selected yet: the chart shows the point with the hottest interpass temperature.
+  ASSERT_GE(thermal->probeChart()->point(), 0);
+  EXPECT_EQ(t.interpass[static_cast<size_t>(thermal->probeChart()->point())], rep.maxInterpass);
 
   // 3. The spiral coloured by interpass temperature, the limit inside the scale and in the legend.
   ui::SpiralLayer& spiral = w.sceneView()->spiralLayer();
@@ -215,6 +218,13 @@ TEST(ThermalGui, DomeWithTheThermalStage)
   EXPECT_GT(field.shownTriangles(), all / 3);
   EXPECT_TRUE(thermal->timeLabel()->text().startsWith("t = "));
   EXPECT_TRUE(field.legend().title().contains("Temperature (°C)"));
+  // Played back: the frames advance on their own and stop at the end.
+  const int from = slider->value();
+  thermal->play();
+  EXPECT_TRUE(thermal->playing());
+  EXPECT_TRUE(waitFor([&] { return slider->value() >= from + 2; }, 5000));
+  thermal->pause();
+  EXPECT_FALSE(thermal->playing());
   // The Simulation dock's time (a path point) moves the frame with it.
   thermal->setTimeOfPoint(static_cast<long long>(t.pointCount() / 4));
   EXPECT_LT(slider->value(), slider->maximum() * 2 / 3);

@@ -12,6 +12,7 @@
 #include "spira/document/document.h"
 #include "spira/mesh/mesh_primitives.h"
 #include "spira/pipeline/document_plan.h"
+#include "spira/pipeline/planned_path.h"
 #include "spira/pipeline/thermal_stage.h"
 #include "spira/planning/plan_schemas.h"
 
@@ -140,6 +141,24 @@ TEST(ThermalStage, ItsProgressSpanSitsBetweenProcessAndKinematics)
   EXPECT_EQ(spans[kThermalPlanStage].end, spans[kThermalPlanStage + 1].begin);
   EXPECT_STREQ(spans[kThermalPlanStage + 1].label, "Kinematics");
   EXPECT_EQ(planStageAt(0.85), kThermalPlanStage);
+}
+
+TEST(ThermalStage, ARePlannedPathIsWhatTheViewsAndExportFollow)
+{
+  Results r;
+  auto process = std::make_shared<Trajectory>();
+  process->points.resize(3);
+  r.setProcess(process);
+  EXPECT_EQ(processPathOf(r), r.process);
+  EXPECT_EQ(plannedPathOf(r).trajectory, r.process);
+  auto thermal = std::make_shared<ThermalStageResult>();
+  r.setThermal(thermal);
+  EXPECT_EQ(processPathOf(r), r.process);  // simulated, not re-planned
+  auto replanned = std::make_shared<Trajectory>();
+  replanned->points.resize(5);
+  thermal->replanned = replanned;
+  EXPECT_EQ(processPathOf(r), replanned);
+  EXPECT_EQ(plannedPathOf(r).trajectory, replanned);
 }
 
 TEST(ThermalStage, BadSettingsAreNamed)

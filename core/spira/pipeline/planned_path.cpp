@@ -16,4 +16,9 @@ PlannedPath plannedPathOf(const Results& results)
   return p;
 }
 
+std::shared_ptr<const Trajectory> processPathOf(const Results& results)
+{
+  return results.thermal && results.thermal->replanned ? results.thermal->replanned : results.process;
+}
+
 }  // namespace spira

@@ -19,4 +19,8 @@ struct PlannedPath {
 
 PlannedPath plannedPathOf(const Results& results);
 
+// The path with its process channels that the views draw and number their points on: the thermal
+// stage's re-planned path when it re-planned, else the process stage's (null: not planned).
+std::shared_ptr<const Trajectory> processPathOf(const Results& results);
+
 }  // namespace spira

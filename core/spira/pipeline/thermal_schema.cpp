@@ -83,7 +83,9 @@ const ThermalBinding& thermalBinding()
                        text("Divisions", "Element rows across each layer (f).", kResolution)),
           &StoredThermal::divisions),
       ThermalBinding::number(
-          numberParam("cooling", 0.0, 0.0, 36000.0, "s",
+          // Two minutes by default (spira-cli thermal: none), so the frames show the last layers
+          // cooling too and the probe chart of a point near the end has a history.
+          numberParam("cooling", 120.0, 0.0, 36000.0, "s",
                       text("Cooling time", "Time simulated after the arc stops.", kResolution)),
           [](StoredThermal& s) -> double& { return s.study.solver.coolingTime; }),
       ThermalBinding::number(

@@ -182,7 +182,8 @@ void ProbeChart::update()
   double hi = std::max(meltingC_, limitC_);
   for (const auto& r : rows) hi = std::max(hi, r[1]);
   hi *= 1.15;
-  const double lo = std::min(0.0, result_->frames.offset);
+  double lo = 0.0;
+  for (const auto& r : rows) lo = std::min(lo, r[1]);
   setRows(peakMark_, arrival_ >= 0.0 ? std::vector<std::array<double, 2>>{{arrival_ * scale,
                                                                            std::min(result_->peak[i], hi)}}
                                      : std::vector<std::array<double, 2>>{});

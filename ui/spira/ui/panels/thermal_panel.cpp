@@ -12,6 +12,7 @@
 #include <QVBoxLayout>
 
 #include "spira/document/results.h"
+#include "spira/pipeline/planned_path.h"
 #include "spira/ui/charts/probe_chart.h"
 #include "spira/ui/panels/simulation_clock.h"
 #include "spira/ui/views/scene_view.h"
@@ -71,7 +72,7 @@ ThermalPanel::ThermalPanel(SceneView& view, QWidget* parent) : QDockWidget(tr("T
   layout->addLayout(row);
 
   chart_ = new ProbeChart(body);
-  chart_->setMinimumHeight(180);
+  chart_->setMinimumHeight(140);
   layout->addWidget(chart_, 1);
   setWidget(body);
 
@@ -90,7 +91,7 @@ void ThermalPanel::setResults(const Results& r)
   pause();
   result_ = r.thermal && !r.thermal->frames.empty() ? r.thermal : nullptr;
   const ThermalStageReport* report = r.reports.thermal.get();
-  const Trajectory* path = r.thermal && r.thermal->replanned ? r.thermal->replanned.get() : r.process.get();
+  const std::shared_ptr<const Trajectory> path = processPathOf(r);
   pointTimes_.clear();
   if (result_ && path && path->size() == result_->pointCount()) {
     const SimulationClock clock(*path);
@@ -127,8 +128,16 @@ void ThermalPanel::setResults(const Results& r)
   for (QWidget* w :
        {static_cast<QWidget*>(slider_), static_cast<QWidget*>(show_), static_cast<QWidget*>(playPause_)})
     w->setEnabled(result_ != nullptr);
+  hottest_ = -1;
+  if (result_)
+    for (size_t i = 0; i < result_->interpass.size(); ++i)
+      if (std::isfinite(result_->interpass[i]) &&
+          (hottest_ < 0 || result_->interpass[i] > result_->interpass[static_cast<size_t>(hottest_)]))
+        hottest_ = static_cast<long long>(i);
   chart_->setResult(result_, report ? report->meltingTemperature : 0.0,
                     report ? report->interpassLimit : 0.0);
+  setPoint(selected_ >= 0 && result_ && static_cast<size_t>(selected_) < result_->pointCount() ? selected_
+                                                                                               : -1);
   const QSignalBlocker block(slider_);
   slider_->setRange(0, result_ ? static_cast<int>(result_->frames.size()) - 1 : 0);
   slider_->setValue(slider_->maximum());
@@ -137,6 +146,9 @@ void ThermalPanel::setResults(const Results& r)
 
 void ThermalPanel::setPoint(long long index)
 {
+  selected_ = index;
+  // Nothing selected: the hottest point at the torch's return, the one the limit is about.
+  if (index < 0) index = hottest_;
   const bool known = index >= 0 && static_cast<size_t>(index) < pointTimes_.size();
   chart_->setPoint(index, known ? pointTimes_[static_cast<size_t>(index)] : -1.0);
 }

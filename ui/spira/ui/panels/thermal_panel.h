@@ -30,7 +30,8 @@ class ThermalPanel : public QDockWidget {
 
   void setResults(const Results& results);
   bool hasResult() const { return result_ != nullptr; }
-  // The point whose temperature the chart draws (the window's selection).
+  // The point whose temperature the chart draws (the window's selection; negative: none, the chart
+  // then draws the point with the hottest interpass temperature).
   void setPoint(long long index);
   // Shows the frame at or before simulated time t (s).
   void setTime(double t);
@@ -58,6 +59,7 @@ class ThermalPanel : public QDockWidget {
   SceneView& view_;
   std::shared_ptr<const ThermalStageResult> result_;
   std::vector<double> pointTimes_;  // s, when the torch reaches each point
+  long long selected_ = -1, hottest_ = -1;
   QLabel* summary_ = nullptr;
   QLabel* time_ = nullptr;
   QSlider* slider_ = nullptr;

@@ -29,6 +29,7 @@
 
 #include "spira/document/results.h"
 #include "spira/mesh/triangle_mesh.h"
+#include "spira/pipeline/planned_path.h"
 #include "spira/ui/views/field_layer.h"
 #include "spira/ui/views/interaction_style.h"
 #include "spira/ui/views/path_layers.h"
@@ -244,8 +245,9 @@ void SceneView::showResults(const Results& r, const Transform& T_world_part)
                                           (b[5] - b[4]) * (b[5] - b[4]))
                               : 100.0;
   s.paths->setGeneratrices(r.generatrices.get(), T_world_part, 0.012 * diagonal);
-  const Trajectory* path = r.process ? r.process.get() : r.spiral.get();
-  s.spiral->setTrajectory(path, r.process != nullptr, planWindow(r), T_world_part);
+  const std::shared_ptr<const Trajectory> processed = processPathOf(r);
+  const Trajectory* path = processed ? processed.get() : r.spiral.get();
+  s.spiral->setTrajectory(path, processed != nullptr, planWindow(r), T_world_part);
   s.spiral->setKinematics(r.kinematics.get());
   s.spiral->setThermal(r.thermal.get(), r.reports.thermal.get());
   s.thermal->setResult(r.thermal, r.reports.thermal ? r.reports.thermal->meltingTemperature : 0.0,

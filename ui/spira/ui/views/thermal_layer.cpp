@@ -61,8 +61,10 @@ void ThermalLayer::setResult(std::shared_ptr<const ThermalStageResult> result, d
     // One scale for every frame, from the coolest value any frame holds to the melting temperature:
     // the node under the point source peaks far above it, and a scale up to there would leave the
     // solid deposit, where the interpass question lies, in one dark colour. Molten: the top colour.
-    const double lo = result_->frames.offset,
-                 hottest = lo + result_->frames.step * (ThermalFrameSet::kNotDeposited - 1);
+    // Nothing is colder than 0 C in a build: a solver's undershoot below it is not worth the scale.
+    const double lo = std::max(result_->frames.offset, 0.0),
+                 hottest =
+                     result_->frames.offset + result_->frames.step * (ThermalFrameSet::kNotDeposited - 1);
     const double hi = meltingC_ > lo ? std::min(hottest, meltingC_) : hottest;
     vtkSmartPointer<vtkLookupTable> lut = makeLookupTable(ColorMap::Inferno, lo, hi);
     mapper_->SetLookupTable(lut);

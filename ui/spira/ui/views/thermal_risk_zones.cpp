@@ -8,6 +8,7 @@
 #include <QObject>
 
 #include "spira/document/results.h"
+#include "spira/pipeline/planned_path.h"
 #include "spira/ui/panels/log_panel.h"
 
 namespace spira::ui {
@@ -40,7 +41,7 @@ void listThermalRiskZones(LogPanel& log, QListWidget& list, const Results& resul
   const auto& t = results.thermal;
   const auto& report = results.reports.thermal;
   if (!t || !report) return;
-  const Trajectory* path = t->replanned ? t->replanned.get() : results.process.get();
+  const std::shared_ptr<const Trajectory> path = processPathOf(results);
   if (!path || path->size() != t->pointCount()) return;
   const QLocale loc;
   const auto revolutionOf = [&](size_t i) { return path->points[i].revolution + 1; };

@@ -4,6 +4,7 @@
 #include <QLocale>
 
 #include "spira/pipeline/document_plan.h"
+#include "spira/pipeline/planned_path.h"
 #include "spira/pipeline/thermal_schema.h"
 #include "spira/plugin/strategy_name.h"
 #include "spira/ui/charts/joint_chart.h"
@@ -122,8 +123,9 @@ void MainWindow::refreshResults()
     view_->setPartStyle(PartStyle::Shaded);
   }
   hadSpiral_ = hasSpiral;
-  const Trajectory* path = r.process ? r.process.get() : r.spiral.get();
-  chart_->setPath(path, r.process != nullptr, planWindow(r));
+  const std::shared_ptr<const Trajectory> processed = processPathOf(r);
+  const Trajectory* path = processed ? processed.get() : r.spiral.get();
+  chart_->setPath(path, processed != nullptr, planWindow(r));
   inspector_->setResults(r, placement);
   jointChart_->setKinematics(r.kinematics);
   thermal_->setResults(r);
