@@ -1,6 +1,7 @@
 #include "spira/document/invalidation.h"
 
 #include <algorithm>
+#include <variant>
 
 #include "spira/io/json_codec.h"
 
@@ -56,11 +57,21 @@ bool startsWith(const std::string& s, const char* prefix)
   return s.rfind(prefix, 0) == 0;
 }
 
+// The thermal stage is optional: while it is off its values feed nothing.
+bool thermalOn(const PlanSettings& s)
+{
+  const ParamSet values = s.section(PlanSettings::kThermalSection);
+  if (!values.has("enabled")) return false;
+  const bool* on = std::get_if<bool>(&values.values().at("enabled"));
+  return on && *on;
+}
+
 Input classifySection(const std::string& section, const PlanSettings& before, const PlanSettings& after)
 {
   if (section == PlanSettings::kProcessSection) return Input::ProcessSection;
   if (section == PlanSettings::kSpiralSection) return Input::SpiralSection;
-  if (section == PlanSettings::kThermalSection) return Input::ThermalSection;
+  if (section == PlanSettings::kThermalSection)
+    return thermalOn(before) || thermalOn(after) ? Input::ThermalSection : Input::InactiveSection;
   if (startsWith(section, "decomposer."))
     return section == before.decomposerId || section == after.decomposerId ? Input::Decomposer
                                                                            : Input::InactiveSection;
