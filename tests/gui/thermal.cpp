@@ -15,6 +15,7 @@
 #include <QDoubleSpinBox>
 #include <QLabel>
 #include <QListWidget>
+#include <QLocale>
 #include <QPushButton>
 #include <QScrollArea>
 #include <QSlider>
@@ -113,6 +114,9 @@ TEST(ThermalGui, DomeWithTheThermalStage)
   EXPECT_TRUE(thermal->hasResult());
   EXPECT_TRUE(thermal->summaryLabel()->text().contains("°C"));
   EXPECT_TRUE(thermal->summaryLabel()->text().contains(QStringLiteral("%1 °C limit").arg(kLimit)));
+  EXPECT_TRUE(plan->verdictLabel()->text().contains(
+      QStringLiteral("Thermal: interpass up to %1 °C").arg(QLocale().toString(rep.maxInterpass, 'f', 0))))
+      << plan->verdictLabel()->text().toStdString();
   // Nothing selected yet: the chart shows the point with the hottest interpass temperature.
   ASSERT_GE(thermal->probeChart()->point(), 0);
   EXPECT_EQ(t.interpass[static_cast<size_t>(thermal->probeChart()->point())], rep.maxInterpass);

@@ -287,6 +287,19 @@ void PlanPanel::refreshVerdict()
       lines << tr("Build time %1 min").arg(loc.toString(*p.buildTime / 60.0, 'f', 1));
     else
       lines << tr("Process channels out of date: press Plan again.");
+    // The thermal stage's verdict in one line; its dock has the rest.
+    if (const auto& heat = r.reports.thermal) {
+      QString limit;
+      if (heat->interpassLimit > 0.0)
+        limit = heat->pointsOverLimit > 0
+                    ? tr(", above the %1 °C limit at %2 points")
+                          .arg(loc.toString(heat->interpassLimit, 'f', 0),
+                               loc.toString(static_cast<qlonglong>(heat->pointsOverLimit)))
+                    : tr(", within the %1 °C limit").arg(loc.toString(heat->interpassLimit, 'f', 0));
+      lines << tr("Thermal: interpass up to %1 °C%2; %3 points at risk of collapse")
+                   .arg(loc.toString(heat->maxInterpass, 'f', 0), limit,
+                        loc.toString(static_cast<qlonglong>(heat->riskPoints)));
+    }
     if (feasible) {
       text = tr("<b>Feasible plan</b><br>%1").arg(lines.join(QStringLiteral("<br>")));
       style = QStringLiteral(
