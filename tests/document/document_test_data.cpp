@@ -146,6 +146,38 @@ Generatrices sampleGeneratrices()
   return g;
 }
 
+ThermalStageResult sampleThermal(int points)
+{
+  ThermalStageResult t;
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  for (int i = 0; i < 2 * points; ++i) t.nodes.push_back(Vec3(i / 2, 0.0, 2.0 * (i % 2)));
+  for (int i = 0; i + 3 < 2 * points; i += 2) {
+    t.triangles.push_back({i, i + 2, i + 1});
+    t.triangles.push_back({i + 1, i + 2, i + 3});
+  }
+  for (int i = 0; i < points; ++i) {
+    t.pointNode.push_back(2 * i + 1);
+    t.peak.push_back(1500.0 + i);
+    t.interpass.push_back(i == 0 ? nan : 300.0 + 10.0 * i);
+    t.timeAboveMelt.push_back(0.25 * i);
+    t.poolLength.push_back(3.0 + 0.1 * i);
+    t.bond.push_back(0.5 * i);
+    t.risk.push_back(i % 3 == 0 ? 1 : 0);
+  }
+  for (size_t n = 0; n < t.nodes.size(); ++n) t.nodePeak.push_back(1400.0 + static_cast<double>(n));
+  t.probeNodes = {3};
+  t.probeTimes = {0.0, 1.0, 2.0};
+  t.probeTemperatures = {{20.0, 1600.0, 900.5}};
+  std::vector<float> early(t.nodes.size(), std::numeric_limits<float>::quiet_NaN()), late(t.nodes.size());
+  for (size_t n = 0; n < t.nodes.size(); ++n) {
+    if (n < t.nodes.size() / 2) early[n] = 20.0f + static_cast<float>(n);
+    late[n] = 1500.0f - static_cast<float>(n);
+  }
+  t.frames = ThermalFrameSet::quantise({1.0, 2.0}, {early, late});
+  t.replanned = std::make_shared<const Trajectory>(sampleTrajectory(points + 2));
+  return t;
+}
+
 DocumentState fullState()
 {
   DocumentState s;
@@ -177,6 +209,12 @@ DocumentState fullState()
   process.wireLength = 1234.5;
   s.results.setProcess(std::make_shared<const Trajectory>(sampleTrajectory(23)),
                        std::make_shared<const ProcessStageReport>(process));
+  ThermalStageReport thermal;
+  thermal.material = "G3Si1";
+  thermal.maxInterpass = 520.0;
+  thermal.limitMet = false;
+  s.results.setThermal(std::make_shared<const ThermalStageResult>(sampleThermal(23)),
+                       std::make_shared<const ThermalStageReport>(thermal));
   KinematicsStageReport kinematics;
   kinematics.motion.cell = "sample cell";
   kinematics.motion.jointSpeed.perAxis["A1"] = {std::numeric_limits<double>::infinity(), std::nullopt};

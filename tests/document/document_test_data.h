@@ -20,6 +20,9 @@ Trajectory sampleTrajectory(int points);
 Generatrices sampleGeneratrices();
 // A solved motion of `points` points with awkward values (kinematics_test_data.cpp).
 KinematicsResult sampleKinematics(int points);
+// A thermal stage result on `points` points: a strip of shell, NaN where a point has nothing below,
+// two frames (the first before the last nodes are born), one probe and a re-planned path.
+ThermalStageResult sampleThermal(int points);
 // A state with every member set and every stage's result and report present.
 DocumentState fullState();
 

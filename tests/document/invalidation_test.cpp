@@ -92,6 +92,19 @@ TEST(Invalidation, EachSettingKindDropsExactlyItsStages)
          d.setPlanSettings(s);
        },
        before(Stage::Process)},
+      {"thermal switched on", [](Document& d) { d.setParam("thermal", "enabled", true); },
+       before(Stage::Thermal)},
+      {"thermal params while on",
+       [](Document& d) {
+         Document::Transaction t(d, "Thermal limit");
+         d.setParam("thermal", "enabled", true);
+         d.setParam("thermal", "interpass_max", 250.0);
+         t.commit();
+       },
+       before(Stage::Thermal)},
+      // Off, the stage's values feed nothing: the plan keeps everything.
+      {"thermal params while off", [](Document& d) { d.setParam("thermal", "interpass_max", 250.0); },
+       kAllStages},
       {"cell", [](Document& d) { d.setCell(CellRecord()); }, before(Stage::Kinematics)},
       {"cell removed", [](Document& d) { d.clearCell(); }, before(Stage::Kinematics)},
       {"exporter params", [](Document& d) { d.setParam("export.krl", "base", std::int64_t{1}); },
@@ -144,6 +157,9 @@ TEST(Invalidation, SettingAStageResultDropsLaterStagesOnly)
         break;
       case Stage::Process:
         r.setProcess(std::make_shared<const Trajectory>());
+        break;
+      case Stage::Thermal:
+        r.setThermal(std::make_shared<const ThermalStageResult>());
         break;
       case Stage::Kinematics:
         r.setKinematics(std::make_shared<const KinematicsResult>());

@@ -17,6 +17,7 @@
 
 #include "builtin_plugins.h"
 #include "spira/document/document.h"
+#include "spira/pipeline/thermal_schema.h"
 #include "spira/planning/plan_schemas.h"
 #include "spira/plugin/plugin_registry.h"
 #include "spira/ui/panels/param_field.h"
@@ -59,7 +60,8 @@ class PlanSettingsPanel : public ::testing::Test {
 TEST_F(PlanSettingsPanel, EveryParameterOfTheSchemasHasAnEditorOfItsKindInItsCategory)
 {
   for (const auto& [name, schema] : {std::pair<std::string, const ParamSchema*>{"spiral", &spiralSchema()},
-                                     {"process", &processSchema()}}) {
+                                     {"process", &processSchema()},
+                                     {"thermal", &thermalSchema()}}) {
     ParamPanel* p = section(name);
     ASSERT_NE(p, nullptr) << name;
     QStringList groups;
@@ -80,7 +82,9 @@ TEST_F(PlanSettingsPanel, EveryParameterOfTheSchemasHasAnEditorOfItsKindInItsCat
           ASSERT_NE(spin, nullptr) << d.key;
           EXPECT_DOUBLE_EQ(spin->minimum(), *d.min) << d.key;
           EXPECT_DOUBLE_EQ(spin->maximum(), *d.max) << d.key;
-          EXPECT_EQ(spin->suffix(), " " + QString::fromStdString(d.unit)) << d.key;
+          // A dimensionless number (the thermal stage's Bond threshold) has no suffix.
+          EXPECT_EQ(spin->suffix(), d.unit.empty() ? QString() : " " + QString::fromStdString(d.unit))
+              << d.key;
           break;
         }
         case ParamType::Choice: {

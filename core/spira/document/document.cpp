@@ -33,6 +33,8 @@ const void* resultPointer(const Results& r, Stage s)
       return r.spiral.get();
     case Stage::Process:
       return r.process.get();
+    case Stage::Thermal:
+      return r.thermal.get();
     case Stage::Kinematics:
       return r.kinematics.get();
     case Stage::Export:
@@ -55,6 +57,9 @@ void resetResult(Results& r, Stage s)
       break;
     case Stage::Process:
       r.process.reset();
+      break;
+    case Stage::Thermal:
+      r.thermal.reset();
       break;
     case Stage::Kinematics:
       r.kinematics.reset();

@@ -1,6 +1,7 @@
 #include "spira/document/invalidation.h"
 
 #include <algorithm>
+#include <variant>
 
 #include "spira/io/json_codec.h"
 
@@ -20,6 +21,7 @@ enum class Input {
   ClosureFinder,    // chosen closure finder id, or the values of its section
   SpiralSection,    // "spiral" section
   ProcessSection,   // "process" section
+  ThermalSection,   // "thermal" section: the optional thermal stage and its re-planning
   Cell,             // robot, tool, positioner, axes
   ExporterSection,  // "export.*" sections
   ImporterSection,  // "import.*"/"importer.*" sections: used at import time only
@@ -38,9 +40,9 @@ const Rule kInvalidation[] = {
     {Input::PartLabel, Stage::Export},         {Input::Substrate, Stage::Field},
     {Input::Decomposer, Stage::Generatrices},  {Input::ClosureFinder, Stage::Generatrices},
     {Input::SpiralSection, Stage::Spiral},     {Input::ProcessSection, Stage::Process},
-    {Input::Cell, Stage::Kinematics},          {Input::ExporterSection, Stage::Export},
-    {Input::ImporterSection, std::nullopt},    {Input::InactiveSection, std::nullopt},
-    {Input::OtherSection, Stage::Field},
+    {Input::ThermalSection, Stage::Thermal},   {Input::Cell, Stage::Kinematics},
+    {Input::ExporterSection, Stage::Export},   {Input::ImporterSection, std::nullopt},
+    {Input::InactiveSection, std::nullopt},    {Input::OtherSection, Stage::Field},
 };
 
 std::optional<Stage> stageFor(Input input)
@@ -55,10 +57,21 @@ bool startsWith(const std::string& s, const char* prefix)
   return s.rfind(prefix, 0) == 0;
 }
 
+// The thermal stage is optional: while it is off its values feed nothing.
+bool thermalOn(const PlanSettings& s)
+{
+  const ParamSet values = s.section(PlanSettings::kThermalSection);
+  if (!values.has("enabled")) return false;
+  const bool* on = std::get_if<bool>(&values.values().at("enabled"));
+  return on && *on;
+}
+
 Input classifySection(const std::string& section, const PlanSettings& before, const PlanSettings& after)
 {
   if (section == PlanSettings::kProcessSection) return Input::ProcessSection;
   if (section == PlanSettings::kSpiralSection) return Input::SpiralSection;
+  if (section == PlanSettings::kThermalSection)
+    return thermalOn(before) || thermalOn(after) ? Input::ThermalSection : Input::InactiveSection;
   if (startsWith(section, "decomposer."))
     return section == before.decomposerId || section == after.decomposerId ? Input::Decomposer
                                                                            : Input::InactiveSection;

@@ -80,6 +80,7 @@ nlohmann::json mergedPlanReport(const Results& results)
   if (!reports.spiral) return nlohmann::json::object();
   nlohmann::json report = reportToJson(*reports.spiral);
   if (reports.process) report["process"] = reportToJson(*reports.process);
+  if (reports.thermal) report["thermal"] = reportToJson(*reports.thermal);
   if (const auto& kinematics = reports.kinematics) {
     const nlohmann::json motion = reportToJson(kinematics->motion);
     for (const auto& [key, value] : motion.items()) report[key] = value;

@@ -18,6 +18,7 @@ namespace spira {
 struct PlanSettings {
   static constexpr const char* kProcessSection = kProcessSectionName;  // process window (speeds, heights)
   static constexpr const char* kSpiralSection = kSpiralSectionName;    // spiral construction
+  static constexpr const char* kThermalSection = kThermalSectionName;  // the optional thermal stage
   static constexpr const char* kDefaultDecomposer = kDefaultDecomposerId;
   static constexpr const char* kDefaultClosureFinder = kDefaultClosureFinderId;
 

@@ -58,6 +58,8 @@ bool Results::has(Stage s) const
       return spiral != nullptr;
     case Stage::Process:
       return process != nullptr;
+    case Stage::Thermal:
+      return thermal != nullptr;
     case Stage::Kinematics:
       return kinematics != nullptr;
     case Stage::Export:
@@ -81,6 +83,7 @@ void Results::invalidateFrom(Stage s)
   if (first <= stageIndex(Stage::Generatrices)) generatrices.reset();
   if (first <= stageIndex(Stage::Spiral)) spiral.reset();
   if (first <= stageIndex(Stage::Process)) process.reset();
+  if (first <= stageIndex(Stage::Thermal)) thermal.reset();
   if (first <= stageIndex(Stage::Kinematics)) kinematics.reset();
   exported.reset();
   for (int i = first; i < kStageCount; ++i) reports.reset(stageAt(i));
@@ -116,6 +119,14 @@ void Results::setProcess(std::shared_ptr<const Trajectory> r,
   reports.process = std::move(report);
 }
 
+void Results::setThermal(std::shared_ptr<const ThermalStageResult> r,
+                         std::shared_ptr<const ThermalStageReport> report)
+{
+  invalidateFrom(Stage::Thermal);
+  thermal = std::move(r);
+  reports.thermal = std::move(report);
+}
+
 void Results::setKinematics(std::shared_ptr<const KinematicsResult> r,
                             std::shared_ptr<const KinematicsStageReport> report)
 {
@@ -132,10 +143,13 @@ void Results::setExport(std::shared_ptr<const ExportStageResult> r)
 
 StageMask Results::differingStages(const Results& o) const
 {
-  const bool same[kStageCount] = {
-      sameValue(field, o.field),           sameValue(generatrices, o.generatrices),
-      sameValue(spiral, o.spiral),         sameValue(process, o.process),
-      sameValue(kinematics, o.kinematics), sameReportValue(exported, o.exported)};
+  const bool same[kStageCount] = {sameValue(field, o.field),
+                                  sameValue(generatrices, o.generatrices),
+                                  sameValue(spiral, o.spiral),
+                                  sameValue(process, o.process),
+                                  sameValue(thermal, o.thermal),
+                                  sameValue(kinematics, o.kinematics),
+                                  sameReportValue(exported, o.exported)};
   StageMask m = 0;
   for (int i = 0; i < kStageCount; ++i)
     if (!same[i] || !reports.same(stageAt(i), o.reports)) m |= stageBit(stageAt(i));

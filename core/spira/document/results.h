@@ -9,6 +9,7 @@
 #include "spira/document/kinematics_result.h"
 #include "spira/document/stage.h"
 #include "spira/document/stage_reports.h"
+#include "spira/document/thermal_result.h"
 #include "spira/path/trajectory.h"
 
 namespace spira {
@@ -30,6 +31,7 @@ struct StageReports {
   std::shared_ptr<const GeneratricesStageReport> generatrices;
   std::shared_ptr<const SpiralStageReport> spiral;
   std::shared_ptr<const ProcessStageReport> process;
+  std::shared_ptr<const ThermalStageReport> thermal;
   std::shared_ptr<const KinematicsStageReport> kinematics;
 
   // Calls `f` with the member pointer of stage `s`'s report (&StageReports::spiral...) and returns
@@ -61,6 +63,9 @@ bool StageReports::visitMember(Stage s, F&& f)
     case Stage::Process:
       f(&StageReports::process);
       return true;
+    case Stage::Thermal:
+      f(&StageReports::thermal);
+      return true;
     case Stage::Kinematics:
       f(&StageReports::kinematics);
       return true;
@@ -75,8 +80,9 @@ bool StageReports::visitMember(Stage s, F&& f)
 struct Results {
   std::shared_ptr<const FieldResult> field;
   std::shared_ptr<const Generatrices> generatrices;
-  std::shared_ptr<const Trajectory> spiral;   // the continuous spiral, geometry channels
-  std::shared_ptr<const Trajectory> process;  // with orientation and process channels
+  std::shared_ptr<const Trajectory> spiral;           // the continuous spiral, geometry channels
+  std::shared_ptr<const Trajectory> process;          // with orientation and process channels
+  std::shared_ptr<const ThermalStageResult> thermal;  // null: not simulated (the stage is optional)
   std::shared_ptr<const KinematicsResult> kinematics;
   std::shared_ptr<const ExportStageResult> exported;
   StageReports reports;
@@ -96,6 +102,8 @@ struct Results {
                        std::shared_ptr<const GeneratricesStageReport> report = {});
   void setSpiral(std::shared_ptr<const Trajectory> r, std::shared_ptr<const SpiralStageReport> report = {});
   void setProcess(std::shared_ptr<const Trajectory> r, std::shared_ptr<const ProcessStageReport> report = {});
+  void setThermal(std::shared_ptr<const ThermalStageResult> r,
+                  std::shared_ptr<const ThermalStageReport> report = {});
   void setKinematics(std::shared_ptr<const KinematicsResult> r,
                      std::shared_ptr<const KinematicsStageReport> report = {});
   void setExport(std::shared_ptr<const ExportStageResult> r);

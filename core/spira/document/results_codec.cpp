@@ -6,6 +6,8 @@
 #include "spira/base/error.h"
 #include "spira/document/results.h"
 #include "spira/document/stage_report_codec.h"
+#include "spira/document/thermal_result.h"
+#include "spira/document/trajectory_codec.h"
 #include "spira/io/json_codec.h"
 
 namespace spira {
@@ -13,7 +15,9 @@ namespace spira {
 namespace {
 
 // 2: the kinematics result is typed (kinematics_result.h); schema 1 held a JSON payload that
-// nothing produced, and it is dropped on reading (the stage is recomputed).
+// nothing produced, and it is dropped on reading (the stage is recomputed). The thermal stage's
+// result came later without a new schema: it is optional, a file without it reads as not simulated,
+// and an earlier version opening a file with it ignores it (the stage's report too).
 constexpr int kResultsSchema = 2;
 
 // The codecs below list every member of these types. When a member is added, these fail to
@@ -22,6 +26,8 @@ static_assert(sizeof(void*) != 8 || sizeof(TrajectoryPoint) == 144, "update traj
 static_assert(sizeof(void*) != 8 || sizeof(Generatrices) == 80, "update generatricesToJson/FromJson");
 static_assert(sizeof(void*) != 8 || sizeof(JointPoint) == 256, "update jointsToJson/FromJson");
 static_assert(sizeof(void*) != 8 || sizeof(KinematicsCheck) == 32, "update kinematicsToJson/FromJson");
+
+}  // namespace
 
 nlohmann::json trajectoryToJson(const Trajectory& t)
 {
@@ -60,6 +66,8 @@ nlohmann::json trajectoryToJson(const Trajectory& t)
           {"extra", std::move(extra)}};
 }
 
+namespace {
+
 template <class T>
 std::vector<T> sized(std::vector<T> v, size_t n, const std::string& what)
 {
@@ -68,6 +76,8 @@ std::vector<T> sized(std::vector<T> v, size_t n, const std::string& what)
                      "the project file is damaged");
   return v;
 }
+
+}  // namespace
 
 Trajectory trajectoryFromJson(const nlohmann::json& j, const std::string& what)
 {
@@ -113,6 +123,8 @@ Trajectory trajectoryFromJson(const nlohmann::json& j, const std::string& what)
         sized(codec::decodeDoubleBlob(it.value(), what + " " + it.key()), n, what + " " + it.key());
   return t;
 }
+
+namespace {
 
 nlohmann::json generatricesToJson(const Generatrices& g)
 {
@@ -319,6 +331,7 @@ nlohmann::json resultsToJson(const Results& r)
   j["generatrices"] = orNull(r.generatrices, generatricesToJson);
   j["spiral"] = orNull(r.spiral, trajectoryToJson);
   j["process"] = orNull(r.process, trajectoryToJson);
+  if (r.thermal) j["thermal"] = thermalResultToJson(*r.thermal);
   j["kinematics"] = orNull(r.kinematics, kinematicsToJson);
   // Payloads are wrapped so that a stored JSON null stays distinct from "not computed".
   const auto wrap = [](const nlohmann::json& p) { return nlohmann::json{{"payload", p}}; };
@@ -362,6 +375,9 @@ Results resultsFromJson(const nlohmann::json& j)
     r.spiral = std::make_shared<const Trajectory>(trajectoryFromJson(*t, what + " spiral"));
   if (const auto* t = member("process"))
     r.process = std::make_shared<const Trajectory>(trajectoryFromJson(*t, what + " process"));
+  if (j.contains("thermal") && !j["thermal"].is_null())
+    r.thermal =
+        std::make_shared<const ThermalStageResult>(thermalResultFromJson(j["thermal"], what + " thermal"));
   if (const auto* k = member("kinematics"); k && schema >= 2)
     r.kinematics = std::make_shared<const KinematicsResult>(kinematicsFromJson(*k, what + " kinematics"));
   if (const auto* e = member("export")) read(*e, "export", r.exported);

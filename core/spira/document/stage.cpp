@@ -15,6 +15,8 @@ const char* stageName(Stage s)
       return "spiral";
     case Stage::Process:
       return "process";
+    case Stage::Thermal:
+      return "thermal";
     case Stage::Kinematics:
       return "kinematics";
     case Stage::Export:

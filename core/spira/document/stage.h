@@ -7,12 +7,14 @@
 namespace spira {
 
 // The recompute stages, in pipeline order. A stage's result depends on the inputs and on every
-// earlier stage, so dropping one stage drops all later ones (PrusaSlicer's PrintBase model).
-enum class Stage { Field, Generatrices, Spiral, Process, Kinematics, Export };
-constexpr int kStageCount = 6;
+// earlier stage, so dropping one stage drops all later ones (PrusaSlicer's PrintBase model). The
+// thermal stage is optional (off unless the "thermal" section enables it): absent, the later
+// stages work on the process stage's path as they would without it.
+enum class Stage { Field, Generatrices, Spiral, Process, Thermal, Kinematics, Export };
+constexpr int kStageCount = 7;
 
 // Stable snake_case names, used in the project file and in reports: "field", "generatrices",
-// "spiral", "process", "kinematics", "export".
+// "spiral", "process", "thermal", "kinematics", "export".
 const char* stageName(Stage s);
 std::optional<Stage> parseStageName(std::string_view name);
 

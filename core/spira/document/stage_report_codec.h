@@ -12,7 +12,7 @@ namespace spira {
 // holds and leaves the rest at its default (a report written by an earlier version lacks the
 // newer keys); a member of the wrong type is an InputError naming `what` and the key, with `hint`.
 // Defined for FieldStageReport, GeneratricesStageReport, SpiralStageReport, ProcessStageReport,
-// MotionStageReport, KinematicsStageReport and ExportStageResult.
+// ThermalStageReport, MotionStageReport, KinematicsStageReport and ExportStageResult.
 template <class Report>
 nlohmann::json reportToJson(const Report& report);
 template <class Report>

@@ -263,6 +263,39 @@ struct ProcessStageReport {
   }
 };
 
+// The thermal stage: the heat of the build along the path (thermal.md), its summary; the per-point
+// and per-node values are the stage's result (thermal_result.h). Keys as `spira-cli thermal` writes
+// them in thermal.json.
+struct ThermalStageReport {
+  std::string material;
+  double meltingTemperature = 0.0, power = 0.0;  // C, W
+  double interpassLimit = 0.0;                   // C; 0: none set
+  double maxPeak = 0.0, maxInterpass = 0.0;      // C
+  double maxPoolLength = 0.0, maxBond = 0.0, bondThreshold = 0.0;
+  std::int64_t riskPoints = 0, pointsOverLimit = 0;
+  double energyIn = 0.0, energyStored = 0.0, energyLost = 0.0;  // J
+  std::int64_t nodes = 0, elements = 0, steps = 0;
+  double simulatedTime = 0.0;  // s
+  // With an interpass limit and re-planning: whether the re-planned path meets it, and its cost.
+  std::optional<bool> limitMet;
+  std::optional<std::int64_t> revolutionsAdded;
+  std::optional<double> buildTimeAdded;  // s
+  SecondsPerStep timings;                // mesh, simulation, solver
+  template <class S, class Io>
+  static void fields(S& s, Io& io)
+  {
+    io("material", s.material), io("melting_C", s.meltingTemperature), io("power_W", s.power);
+    io("interpass_limit_C", s.interpassLimit), io("max_peak_C", s.maxPeak);
+    io("max_interpass_C", s.maxInterpass), io("max_pool_length_mm", s.maxPoolLength);
+    io("max_bond", s.maxBond), io("bond_threshold", s.bondThreshold), io("n_risk_points", s.riskPoints);
+    io("n_points_over_limit", s.pointsOverLimit), io("energy_in_J", s.energyIn);
+    io("energy_stored_J", s.energyStored), io("energy_lost_J", s.energyLost), io("n_nodes", s.nodes);
+    io("n_elements", s.elements), io("n_steps", s.steps), io("simulated_time_s", s.simulatedTime);
+    io.optional("limit_met", s.limitMet), io.optional("revolutions_added", s.revolutionsAdded);
+    io.optional("build_time_added_s", s.buildTimeAdded), io("timings_s", s.timings);
+  }
+};
+
 struct AxisSpeedRecord {
   double maxPercent = 0.0;  // of the axis's speed limit
   std::optional<std::int64_t> point;

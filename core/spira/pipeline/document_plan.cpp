@@ -12,6 +12,7 @@
 #include "spira/mesh/mesh_report.h"
 #include "spira/pipeline/document_motion.h"
 #include "spira/pipeline/plan_records.h"
+#include "spira/pipeline/thermal_stage.h"
 #include "spira/planning/placement_frame.h"
 #include "spira/planning/plan_advice.h"
 #include "spira/planning/plan_files.h"
@@ -23,7 +24,10 @@ namespace spira {
 
 namespace {
 
-constexpr double kPlanShare = 0.8;  // of the job's progress: planPart(); the rest is the kinematics
+// Of the job's progress: planPart() up to kPlanShare, the optional thermal stage up to
+// kThermalShare, the kinematics the rest.
+constexpr double kPlanShare = 0.8;
+constexpr double kThermalShare = 0.9;
 
 std::string summaryLine(const PlanOutput& plan)
 {
@@ -45,13 +49,15 @@ std::string summaryLine(const PlanOutput& plan)
 const std::array<PlanStageSpan, kPlanStageCount>& planStageSpans()
 {
   static const std::array<PlanStageSpan, kPlanStageCount> spans{{
-      // planPart()'s own spans scaled into [0, 0.8] (kPlanShare); the cell's motion takes the rest.
+      // planPart()'s own spans scaled into [0, 0.8] (kPlanShare), the thermal stage (skipped when
+      // off), then the cell's motion.
       {"Scalar field", 0.0, 0.24},
       {"Closure point", 0.24, 0.28},
       {"Generatrices", 0.28, 0.64},
       {"Spiral", 0.64, 0.76},
       {"Process", 0.76, 0.8},
-      {"Kinematics", 0.8, 1.0},
+      {"Thermal", 0.8, 0.9},
+      {"Kinematics", 0.9, 1.0},
   }};
   return spans;
 }
@@ -139,8 +145,18 @@ DocumentPlan planDocument(const DocumentState& snapshot, const PluginRegistry& r
   r.setProcess(std::move(processed),
                std::make_shared<const ProcessStageReport>(processStageReport(plan.process)));
 
-  SubProgress kinematicsProgress(progress, kPlanShare, 1.0, "kinematics");
-  DocumentMotion kinematics = solveDocumentMotion(snapshot, *r.process, request.substrateZ,
+  // Off, the section is not read: a plan without the stage is the plan it always was.
+  const ParamSet thermalValues = settings.section(PlanSettings::kThermalSection);
+  if (thermalStageEnabled(thermalValues)) {
+    const ThermalStageSettings thermal = thermalStageSettingsFrom(thermalValues);
+    SubProgress thermalProgress(progress, kPlanShare, kThermalShare, "thermal");
+    ThermalStageOutput heat = runThermalStage(
+        *r.process, thermal, beadWidthOf(settings.section(PlanSettings::kProcessSection)), thermalProgress);
+    r.setThermal(std::move(heat.result), std::move(heat.report));
+  }
+  const Trajectory& motionPath = r.thermal && r.thermal->replanned ? *r.thermal->replanned : *r.process;
+  SubProgress kinematicsProgress(progress, kThermalShare, 1.0, "kinematics");
+  DocumentMotion kinematics = solveDocumentMotion(snapshot, motionPath, request.substrateZ,
                                                   kinematicsProgress, options.resolveCollisions);
   out.warnings.insert(out.warnings.end(), kinematics.warnings.begin(), kinematics.warnings.end());
   out.motionOk = !snapshot.cell || kinematics.ok;
@@ -167,6 +183,11 @@ std::vector<SettingsProblem> settingsProblems(const PlanSettings& settings)
     } catch (const Error& e) {
       out.push_back({e.what(), e.hint()});
     }
+  }
+  try {
+    thermalStageSettingsFrom(settings.section(PlanSettings::kThermalSection));
+  } catch (const Error& e) {
+    out.push_back({e.what(), e.hint()});
   }
   return out;
 }

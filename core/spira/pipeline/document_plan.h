@@ -23,7 +23,8 @@ struct PlanStageSpan {
   const char* label;
   double begin, end;
 };
-constexpr int kPlanStageCount = 6;
+constexpr int kPlanStageCount = 7;
+constexpr int kThermalPlanStage = 5;  // the optional thermal stage's span, skipped when it is off
 const std::array<PlanStageSpan, kPlanStageCount>& planStageSpans();
 // The stage index whose span holds `fraction` (the last one from its begin on).
 int planStageAt(double fraction);

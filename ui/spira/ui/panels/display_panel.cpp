@@ -21,6 +21,7 @@
 #include "spira/ui/views/path_layers.h"
 #include "spira/ui/views/scene_view.h"
 #include "spira/ui/views/spiral_layer.h"
+#include "spira/ui/views/thermal_layer.h"
 
 namespace spira::ui {
 
@@ -50,6 +51,7 @@ QFormLayout* DisplayPanel::buildPartRow(QWidget* body)
   partStyle_->addItem(tr("Coloured by the field"), static_cast<int>(PartStyle::Field));
   partStyle_->addItem(tr("Transparent"), static_cast<int>(PartStyle::Transparent));
   partStyle_->addItem(tr("Hidden"), static_cast<int>(PartStyle::Hidden));
+  partStyle_->addItem(tr("Temperature (thermal stage)"), static_cast<int>(PartStyle::Temperature));
   partStyle_->setToolTip(tr("How the part's surface is drawn under the plan"));
   partStyle_->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
   partStyle_->setMinimumContentsLength(12);
@@ -225,6 +227,9 @@ void DisplayPanel::resultsChanged()
   // Choices that have nothing to show are greyed out.
   if (auto* model = qobject_cast<QStandardItemModel*>(partStyle_->model()))
     model->item(partStyle_->findData(static_cast<int>(PartStyle::Field)))->setEnabled(field.hasField());
+  if (auto* model = qobject_cast<QStandardItemModel*>(partStyle_->model()))
+    model->item(partStyle_->findData(static_cast<int>(PartStyle::Temperature)))
+        ->setEnabled(view_->thermalLayer().hasResult());
   const PathLayers& paths = view_->pathLayers();
   generatrices_->setText(
       paths.stride() > 1 ? tr("Generatrices (1 in %1 of %2)").arg(paths.stride()).arg(paths.generatrixCount())

@@ -7,6 +7,7 @@
 
 #include "spira/document/document.h"
 #include "spira/mesh/mesh_report.h"
+#include "spira/pipeline/thermal_schema.h"
 
 namespace spira::ui {
 
@@ -139,9 +140,13 @@ void fillResults(QTreeWidget* tree, const Document& doc)
   const Results& r = doc.results();
   int present = 0;
   for (int i = 0; i < kStageCount; ++i) present += r.has(stageAt(i)) ? 1 : 0;
-  QTreeWidgetItem* top = addTop(
-      tree, QObject::tr("Results"),
-      present == 0 ? QObject::tr("none") : QObject::tr("%1 of %2 stages").arg(present).arg(kStageCount));
+  // The thermal stage counts when it is switched on (or was when its results were made).
+  const bool thermal =
+      r.thermal || thermalStageEnabled(doc.settings()->section(PlanSettings::kThermalSection));
+  const int stages = kStageCount - (thermal ? 0 : 1);
+  QTreeWidgetItem* top =
+      addTop(tree, QObject::tr("Results"),
+             present == 0 ? QObject::tr("none") : QObject::tr("%1 of %2 stages").arg(present).arg(stages));
   const QString missing = QObject::tr("not computed");
   addRow(top, QObject::tr("Field"),
          r.field ? QObject::tr("%1 values").arg(count(r.field->values.size())) : missing);
@@ -149,6 +154,12 @@ void fillResults(QTreeWidget* tree, const Document& doc)
          r.generatrices ? QObject::tr("%1 curves").arg(count(r.generatrices->lines.size())) : missing);
   addRow(top, QObject::tr("Spiral"), r.spiral ? trajectoryText(r.spiral) : missing);
   addRow(top, QObject::tr("Process"), r.process ? trajectoryText(r.process) : missing);
+  if (thermal)
+    addRow(top, QObject::tr("Thermal"),
+           r.thermal ? QObject::tr("%1 nodes, %2 frames")
+                           .arg(count(r.thermal->nodes.size()))
+                           .arg(count(r.thermal->frames.size()))
+                     : missing);
   addRow(top, QObject::tr("Kinematics"), r.kinematics ? QObject::tr("computed") : missing);
   addRow(top, QObject::tr("Export"),
          r.exported ? QObject::tr("%n file(s) written", "", static_cast<int>(r.exported->files.size()))

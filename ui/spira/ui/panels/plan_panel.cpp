@@ -15,6 +15,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "spira/pipeline/thermal_schema.h"
 #include "spira/planning/plan_schemas.h"
 #include "spira/plugin/plugin_registry.h"
 #include "spira/ui/panels/param_panel.h"
@@ -71,6 +72,9 @@ PlanPanel::PlanPanel(Document& doc, const PluginRegistry& registry, QWidget* par
   connectPanel(process);
   tabs_->addTab(scrolled(spiral, tabs_), tr("Spiral"));
   tabs_->addTab(scrolled(process, tabs_), tr("Process"));
+  auto* thermal = new ParamPanel(PlanSettings::kThermalSection, thermalSchema());
+  panels_[thermal->section()] = thermal;
+  connectPanel(thermal);
 
   auto* strategy = new QWidget;
   auto* strategyLayout = new QVBoxLayout(strategy);
@@ -101,6 +105,7 @@ PlanPanel::PlanPanel(Document& doc, const PluginRegistry& registry, QWidget* par
   strategyLayout->addLayout(closureBox_);
   strategyLayout->addStretch(1);
   tabs_->addTab(scrolled(strategy, tabs_), tr("Strategy"));
+  tabs_->addTab(scrolled(thermal, tabs_), tr("Thermal"));
   layout->addWidget(tabs_, 1);
 
   connect(decomposer_, QOverload<int>::of(&QComboBox::activated), this, [this](int i) {
@@ -282,6 +287,19 @@ void PlanPanel::refreshVerdict()
       lines << tr("Build time %1 min").arg(loc.toString(*p.buildTime / 60.0, 'f', 1));
     else
       lines << tr("Process channels out of date: press Plan again.");
+    // The thermal stage's verdict in one line; its dock has the rest.
+    if (const auto& heat = r.reports.thermal) {
+      QString limit;
+      if (heat->interpassLimit > 0.0)
+        limit = heat->pointsOverLimit > 0
+                    ? tr(", above the %1 °C limit at %2 points")
+                          .arg(loc.toString(heat->interpassLimit, 'f', 0),
+                               loc.toString(static_cast<qlonglong>(heat->pointsOverLimit)))
+                    : tr(", within the %1 °C limit").arg(loc.toString(heat->interpassLimit, 'f', 0));
+      lines << tr("Thermal: interpass up to %1 °C%2; %3 points at risk of collapse")
+                   .arg(loc.toString(heat->maxInterpass, 'f', 0), limit,
+                        loc.toString(static_cast<qlonglong>(heat->riskPoints)));
+    }
     if (feasible) {
       text = tr("<b>Feasible plan</b><br>%1").arg(lines.join(QStringLiteral("<br>")));
       style = QStringLiteral(

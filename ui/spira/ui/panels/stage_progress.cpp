@@ -37,11 +37,16 @@ StageProgress::StageProgress(QWidget* parent) : QWidget(parent)
   cancel_->setToolTip(tr("Stop planning; the previous results stay (Esc)"));
   connect(cancel_, &QPushButton::clicked, this, &StageProgress::cancelRequested);
   grid->addWidget(cancel_, kPlanStageCount + 1, 1, Qt::AlignRight);
+  // The optional thermal stage's row only while a plan runs it, so the dock keeps its size otherwise.
+  labels_[kThermalPlanStage]->hide();
+  bars_[kThermalPlanStage]->hide();
   grid->setColumnStretch(1, 1);
 }
 
-void StageProgress::start()
+void StageProgress::start(bool thermal)
 {
+  labels_[kThermalPlanStage]->setVisible(thermal);
+  bars_[kThermalPlanStage]->setVisible(thermal);
   running_ = true;
   current_ = 0;
   for (QProgressBar* b : bars_) b->setValue(0);
@@ -81,6 +86,11 @@ void StageProgress::stop()
   cancel_->setEnabled(false);
   highlightStage(-1);
   emit runningChanged(false);
+}
+
+bool StageProgress::stageShown(int stage) const
+{
+  return !bars_.at(static_cast<size_t>(stage))->isHidden();
 }
 
 int StageProgress::stagePercent(int stage) const

@@ -25,8 +25,9 @@ class StageProgress : public QWidget {
  public:
   explicit StageProgress(QWidget* parent = nullptr);
 
-  // Resets every bar and enables Cancel.
-  void start();
+  // Resets every bar and enables Cancel. `thermal`: whether the plan runs its optional thermal
+  // stage; without it that stage's bar is hidden.
+  void start(bool thermal = false);
   // The job reported `fraction` of the whole plan (see planStageSpans) while doing `what`.
   void setProgress(double fraction, const QString& what);
   // Idle again.
@@ -35,6 +36,8 @@ class StageProgress : public QWidget {
   bool running() const { return running_; }
 
   int currentStage() const { return current_; }
+  // Whether the bar of `stage` is shown (the thermal stage's only when the plan runs it).
+  bool stageShown(int stage) const;
   // Percent shown by the bar of `stage` (0..100).
   int stagePercent(int stage) const;
   QPushButton* cancelButton() const { return cancel_; }

@@ -46,6 +46,20 @@ constexpr std::array<Stop, 5> kWindow{{{0.000, 0.150, 0.300, 0.820},
                                        {0.750, 0.900, 0.560, 0.120},
                                        {1.000, 0.820, 0.120, 0.120}}};
 
+constexpr std::array<Stop, 9> kInferno{{{0.000, 0.001, 0.000, 0.014},
+                                        {0.125, 0.113, 0.044, 0.266},
+                                        {0.250, 0.258, 0.039, 0.406},
+                                        {0.375, 0.417, 0.090, 0.433},
+                                        {0.500, 0.578, 0.148, 0.404},
+                                        {0.625, 0.736, 0.216, 0.330},
+                                        {0.750, 0.865, 0.317, 0.226},
+                                        {0.875, 0.955, 0.480, 0.096},
+                                        {1.000, 0.988, 0.998, 0.645}}};
+constexpr std::array<Stop, 4> kRisk{{{0.000, 0.180, 0.620, 0.330},
+                                     {0.499, 0.180, 0.620, 0.330},
+                                     {0.501, 0.880, 0.100, 0.100},
+                                     {1.000, 0.880, 0.100, 0.100}}};
+
 template <size_t N>
 void fill(vtkColorTransferFunction* f, const std::array<Stop, N>& stops)
 {
@@ -67,6 +81,12 @@ vtkSmartPointer<vtkLookupTable> makeLookupTable(ColorMap map, double lo, double 
       break;
     case ColorMap::Window:
       fill(f.Get(), kWindow);
+      break;
+    case ColorMap::Inferno:
+      fill(f.Get(), kInferno);
+      break;
+    case ColorMap::Risk:
+      fill(f.Get(), kRisk);
       break;
   }
   auto table = vtkSmartPointer<vtkLookupTable>::New();

@@ -19,6 +19,8 @@ enum class ColorMap {
   // Diverging around the middle of the range through a mid-tone green (not white, which would
   // vanish on the light background): deposit heights, thin blue, nominal green, thick red.
   Window,
+  Inferno,  // sequential, dark to bright yellow: temperatures
+  Risk,     // two colours, safe green at 0 and collapse-risk red at 1
 };
 
 // A 256-entry table of `map` over [lo, hi]; values outside take the end colours.

@@ -29,6 +29,7 @@
 #include "spira/base/units.h"
 #include "spira/document/results.h"
 #include "spira/pipeline/document_plan.h"
+#include "spira/pipeline/planned_path.h"
 #include "spira/ui/charts/process_chart.h"
 #include "spira/ui/panels/log_panel.h"
 #include "spira/ui/views/frame_glyphs.h"
@@ -36,6 +37,7 @@
 #include "spira/ui/views/point_selection.h"
 #include "spira/ui/views/scene_view.h"
 #include "spira/ui/views/spiral_layer.h"
+#include "spira/ui/views/thermal_risk_zones.h"
 
 namespace spira::ui {
 
@@ -117,9 +119,10 @@ PathInspector::~PathInspector()
 
 void PathInspector::setResults(const Results& results, const Transform& T_world_part)
 {
-  const std::shared_ptr<const Trajectory> path = results.process ? results.process : results.spiral;
+  const std::shared_ptr<const Trajectory> processed = processPathOf(results);
+  const std::shared_ptr<const Trajectory> path = processed ? processed : results.spiral;
   const bool changed = path != path_ || !T_world_part.isApprox(T_world_part_);
-  hasSpeeds_ = results.process != nullptr;
+  hasSpeeds_ = processed != nullptr;
   if (changed) {
     const bool fresh = path != path_;
     path_ = path;
@@ -356,7 +359,9 @@ void PathInspector::updateChartCursor()
 
 void PathInspector::listOffenders(const Results& results)
 {
-  if (log_ && logList_) listOffendingPoints(*log_, *logList_, results, kPointRole, kMaxListedPoints);
+  if (!log_ || !logList_) return;
+  listOffendingPoints(*log_, *logList_, results, kPointRole, kMaxListedPoints);
+  listThermalRiskZones(*log_, *logList_, results, kPointRole, kMaxListedPoints);
 }
 
 }  // namespace spira::ui

@@ -29,11 +29,13 @@
 
 #include "spira/document/results.h"
 #include "spira/mesh/triangle_mesh.h"
+#include "spira/pipeline/planned_path.h"
 #include "spira/ui/views/field_layer.h"
 #include "spira/ui/views/interaction_style.h"
 #include "spira/ui/views/path_layers.h"
 #include "spira/ui/views/spiral_layer.h"
 #include "spira/ui/views/substrate_grid.h"
+#include "spira/ui/views/thermal_layer.h"
 #include "spira/ui/views/vtk_mesh.h"
 
 // spira_ui is a static library: register VTK's object-factory overrides here, where the view
@@ -82,6 +84,7 @@ struct SceneView::Scene {
   std::unique_ptr<FieldLayer> field;
   std::unique_ptr<PathLayers> paths;
   std::unique_ptr<SpiralLayer> spiral;
+  std::unique_ptr<ThermalLayer> thermal;
 };
 
 SceneView::SceneView(QWidget* parent) : QWidget(parent), scene_(std::make_unique<Scene>())
@@ -185,6 +188,7 @@ SceneView::SceneView(QWidget* parent) : QWidget(parent), scene_(std::make_unique
   s.field = std::make_unique<FieldLayer>(s.renderer, s.partMapper);
   s.paths = std::make_unique<PathLayers>(s.renderer);
   s.spiral = std::make_unique<SpiralLayer>(s.renderer);
+  s.thermal = std::make_unique<ThermalLayer>(s.renderer);
   setCameraPreset(CameraPreset::Iso);
 }
 
@@ -220,6 +224,11 @@ SpiralLayer& SceneView::spiralLayer()
   return *scene_->spiral;
 }
 
+ThermalLayer& SceneView::thermalLayer()
+{
+  return *scene_->thermal;
+}
+
 void SceneView::showResults(const Results& r, const Transform& T_world_part)
 {
   Scene& s = *scene_;
@@ -236,9 +245,14 @@ void SceneView::showResults(const Results& r, const Transform& T_world_part)
                                           (b[5] - b[4]) * (b[5] - b[4]))
                               : 100.0;
   s.paths->setGeneratrices(r.generatrices.get(), T_world_part, 0.012 * diagonal);
-  const Trajectory* path = r.process ? r.process.get() : r.spiral.get();
-  s.spiral->setTrajectory(path, r.process != nullptr, planWindow(r), T_world_part);
+  const std::shared_ptr<const Trajectory> processed = processPathOf(r);
+  const Trajectory* path = processed ? processed.get() : r.spiral.get();
+  s.spiral->setTrajectory(path, processed != nullptr, planWindow(r), T_world_part);
   s.spiral->setKinematics(r.kinematics.get());
+  s.spiral->setThermal(r.thermal.get(), r.reports.thermal.get());
+  s.thermal->setResult(r.thermal, r.reports.thermal ? r.reports.thermal->meltingTemperature : 0.0,
+                       T_world_part);
+  if (!s.thermal->hasResult() && s.partStyle == PartStyle::Temperature) s.partStyle = PartStyle::Transparent;
   applyPartStyle();
   scheduleRender();
 }
@@ -259,7 +273,10 @@ void SceneView::applyPartStyle()
 {
   Scene& s = *scene_;
   const PartStyle style = s.partStyle;
-  s.part->SetVisibility(validBounds(s.partBounds) && style != PartStyle::Hidden);
+  s.part->SetVisibility(validBounds(s.partBounds) && style != PartStyle::Hidden &&
+                        style != PartStyle::Temperature);
+  s.thermal->setVisible(style == PartStyle::Temperature);
+  s.spiral->setHiddenByPart(style == PartStyle::Temperature);
   vtkProperty* p = s.part->GetProperty();
   const bool ghost = style == PartStyle::Transparent;
   p->SetOpacity(ghost ? 0.28 : 1.0);

@@ -24,6 +24,7 @@ namespace spira::ui {
 class FieldLayer;
 class PathLayers;
 class SpiralLayer;
+class ThermalLayer;
 
 enum class CameraPreset { Iso, Front, Top, Side };
 
@@ -33,6 +34,7 @@ enum class PartStyle {
   Field,        // coloured by the plan's scalar field, with iso-lines
   Transparent,  // a faint ghost, so the spiral on it reads clearly
   Hidden,
+  Temperature,  // the deposit as laid by a time of the build, coloured by its temperature then
 };
 
 // The central 3D view: the part shaded (edges on demand), the substrate plate with a grid, an
@@ -61,6 +63,7 @@ class SceneView : public QWidget {
   FieldLayer& fieldLayer();
   PathLayers& pathLayers();
   SpiralLayer& spiralLayer();
+  ThermalLayer& thermalLayer();
   void setPartStyle(PartStyle style);
   PartStyle partStyle() const;
   // Renders soon (once control returns to the event loop), after a layer was changed.

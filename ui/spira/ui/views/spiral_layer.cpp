@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include <QLocale>
 #include <QObject>
 
 #include <vtkActor.h>
@@ -58,6 +59,17 @@ SpiralChannelInfo spiralChannelInfo(SpiralChannel c)
       return {"dexterity", QObject::tr("Dexterity"), QString(), false, true};
     case SpiralChannel::LimitMargin:
       return {"limit_margin", QObject::tr("Joint-limit margin"), QStringLiteral("deg"), false, true};
+    case SpiralChannel::PeakTemperature:
+      return {"peak_temperature", QObject::tr("Peak temperature"), QStringLiteral("°C"), false, false, true};
+    case SpiralChannel::InterpassTemperature:
+      return {"interpass_temperature",
+              QObject::tr("Interpass temperature"),
+              QStringLiteral("°C"),
+              false,
+              false,
+              true};
+    case SpiralChannel::CollapseRisk:
+      return {"collapse_risk", QObject::tr("Collapse risk"), QString(), false, false, true};
   }
   return {"height", QObject::tr("Deposit height"), QStringLiteral("mm"), false, false};
 }
@@ -119,7 +131,8 @@ SpiralLayer::~SpiralLayer() = default;
 bool SpiralLayer::channelAvailable(SpiralChannel c) const
 {
   const SpiralChannelInfo info = spiralChannelInfo(c);
-  return hasTrajectory() && (hasSpeeds_ || !info.needsProcess) && (hasKinematics_ || !info.needsKinematics);
+  return hasTrajectory() && (hasSpeeds_ || !info.needsProcess) && (hasKinematics_ || !info.needsKinematics) &&
+         (hasThermal_ || !info.needsThermal);
 }
 
 void SpiralLayer::setTrajectory(const Trajectory* path, bool hasSpeeds, std::optional<PlanWindow> window,
@@ -133,6 +146,7 @@ void SpiralLayer::setTrajectory(const Trajectory* path, bool hasSpeeds, std::opt
   violations_.clear();
   kinematicFlags_.clear();
   hasKinematics_ = false;
+  hasThermal_ = false;
   pointCount_ = path ? static_cast<long long>(path->size()) : 0;
   const vtkIdType n = pointCount_;
   vtkNew<vtkPoints> points;
@@ -290,6 +304,18 @@ void SpiralLayer::updateColours()
   } else if (channel_ == SpiralChannel::Revolution || channel_ == SpiralChannel::Dexterity ||
              channel_ == SpiralChannel::LimitMargin) {
     map = ColorMap::Viridis;  // dark where the robot is close to a singularity or a limit
+  } else if (channel_ == SpiralChannel::CollapseRisk) {
+    map = ColorMap::Risk;
+    r[0] = 0.0, r[1] = 1.0;
+  } else if (info.needsThermal) {
+    map = ColorMap::Inferno;
+    // The node under the point source peaks far above melting at a few points: the scale spans
+    // the 2nd to 98th percentile so that those few do not leave the rest in one colour.
+    if (channel_ == SpiralChannel::PeakTemperature && peakScale_.second > peakScale_.first)
+      r[0] = peakScale_.first, r[1] = peakScale_.second;
+    // The interpass limit, when set, sits inside the scale so that the colours above it read as too hot.
+    if (channel_ == SpiralChannel::InterpassTemperature && interpassLimitC_ > 0.0)
+      r[1] = std::max(r[1], interpassLimitC_);
   }
   if (!(r[1] > r[0])) {
     // A constant channel (the wire feed in synergic mode) still gets a readable legend.
@@ -314,17 +340,45 @@ void SpiralLayer::updateColours()
   mapper_->SetScalarRange(r);
   mapper_->ScalarVisibilityOn();
   legend_.setLookupTable(lut);
-  legend_.setLabelFormat(channel_ == SpiralChannel::Revolution ? QStringLiteral("%.0f")
-                                                               : labelFormatFor(r[0], r[1]));
+  if (channel_ == SpiralChannel::CollapseRisk) legend_.setLabels({0.0, 1.0});
+  // The limit is one of the labels, so the colour where the deposit gets too hot reads off the bar.
+  if (channel_ == SpiralChannel::InterpassTemperature && interpassLimitC_ > r[0] && interpassLimitC_ < r[1])
+    legend_.setLabels({r[0], interpassLimitC_, 0.5 * (interpassLimitC_ + r[1]), r[1]});
+  legend_.setLabelFormat(channel_ == SpiralChannel::Revolution || channel_ == SpiralChannel::CollapseRisk
+                             ? QStringLiteral("%.0f")
+                             : labelFormatFor(r[0], r[1]));
   QString title = info.unit.isEmpty() ? info.name : QStringLiteral("%1 (%2)").arg(info.name, info.unit);
+  title += thermalLegendNote();
   if (window) title += QObject::tr("\nmagenta: outside the window");
   if (hasKinematics_ && !kinematicFlags_.empty()) title += QObject::tr("\nred: unreachable or colliding");
   legend_.setTitle(title);
 }
 
+QString SpiralLayer::thermalLegendNote() const
+{
+  const QLocale loc;
+  switch (channel_) {
+    case SpiralChannel::PeakTemperature:
+      return QObject::tr("\nmelts at %1 °C; 2 %-98 % of points").arg(loc.toString(meltingC_, 'f', 0));
+    case SpiralChannel::InterpassTemperature:
+      return interpassLimitC_ > 0.0 ? QObject::tr("\nlimit %1 °C").arg(loc.toString(interpassLimitC_, 'f', 0))
+                                    : QString();
+    case SpiralChannel::CollapseRisk:
+      return QObject::tr("\n1: at risk (%1 points), 0: safe").arg(loc.toString(riskPoints_));
+    default:
+      return QString();
+  }
+}
+
+void SpiralLayer::setHiddenByPart(bool hidden)
+{
+  hiddenByPart_ = hidden;
+  updateVisibility();
+}
+
 void SpiralLayer::updateVisibility()
 {
-  const bool on = visible_ && hasTrajectory();
+  const bool on = visible_ && !hiddenByPart_ && hasTrajectory();
   actor_->SetVisibility(on);
   legend_.setVisible(on);
   violationActor_->SetVisibility(on && shownViolations_ > 0);

@@ -22,14 +22,26 @@ class vtkTubeFilter;
 
 namespace spira {
 struct KinematicsResult;
+struct ThermalStageReport;
+struct ThermalStageResult;
 struct Trajectory;
 }  // namespace spira
 
 namespace spira::ui {
 
 // What the spiral is coloured by.
-enum class SpiralChannel { Height, TravelSpeed, WireFeed, Revolution, Dexterity, LimitMargin };
-constexpr int kSpiralChannelCount = 6;
+enum class SpiralChannel {
+  Height,
+  TravelSpeed,
+  WireFeed,
+  Revolution,
+  Dexterity,
+  LimitMargin,
+  PeakTemperature,
+  InterpassTemperature,
+  CollapseRisk
+};
+constexpr int kSpiralChannelCount = 9;
 
 struct SpiralChannelInfo {
   const char* array;             // point-data array name
@@ -37,6 +49,7 @@ struct SpiralChannelInfo {
   QString unit;                  // shown unit ("" for counts)
   bool needsProcess;             // only with the process stage's channels
   bool needsKinematics = false;  // only with the kinematics stage (a cell)
+  bool needsThermal = false;     // only with the thermal stage
 };
 SpiralChannelInfo spiralChannelInfo(SpiralChannel c);
 
@@ -60,6 +73,11 @@ class SpiralLayer {
   bool hasKinematics() const { return hasKinematics_; }
   long long kinematicFlagCount() const { return static_cast<long long>(kinematicFlags_.size()); }
   vtkActor* kinematicFlagActor() const { return kinematicFlagActor_; }
+  // The thermal stage's values per point (null, or a different point count - a re-planned path -:
+  // none): peak and interpass temperature, collapse risk. The report gives the melting temperature
+  // and the interpass limit the legend marks.
+  void setThermal(const ThermalStageResult* thermal, const ThermalStageReport* report);
+  bool hasThermal() const { return hasThermal_; }
   bool channelAvailable(SpiralChannel c) const;
   // Returns false (and keeps the channel) when `c` is not available.
   bool setChannel(SpiralChannel c);
@@ -68,6 +86,9 @@ class SpiralLayer {
 
   void setVisible(bool on);
   bool visible() const { return visible_; }
+  // Hidden while the part itself shows what the spiral would cover (the temperature field), without
+  // changing the user's choice (visible()).
+  void setHiddenByPart(bool hidden);
   void setTube(bool on);
   bool tube() const { return tube_; }
 
@@ -94,6 +115,7 @@ class SpiralLayer {
   void rebuildCells();
   void updateColours();
   void updateVisibility();
+  QString thermalLegendNote() const;
 
   vtkRenderer* renderer_;
   vtkNew<vtkPolyData> path_;
@@ -108,6 +130,10 @@ class SpiralLayer {
   vtkNew<vtkActor> kinematicFlagActor_;
   std::vector<long long> kinematicFlags_;  // unreachable or colliding point indices
   bool hasKinematics_ = false;
+  bool hasThermal_ = false;
+  double meltingC_ = 0.0, interpassLimitC_ = 0.0;
+  std::pair<double, double> peakScale_{0.0, 0.0};  // C, 2nd and 98th percentile of the peaks
+  long long riskPoints_ = 0;
   ColorLegend legend_;
   vtkNew<vtkTextActor> banner_;
 
@@ -125,6 +151,7 @@ class SpiralLayer {
   bool hasSpeeds_ = false;
   bool endsOnAPoint_ = false;
   bool visible_ = true;
+  bool hiddenByPart_ = false;
   bool tube_ = false;
   double tubeRadius_ = 0.8;
   SpiralChannel channel_ = SpiralChannel::Height;

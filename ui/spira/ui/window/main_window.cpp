@@ -28,6 +28,7 @@
 #include "spira/ui/panels/plan_panel.h"
 #include "spira/ui/panels/simulation_panel.h"
 #include "spira/ui/panels/stage_progress.h"
+#include "spira/ui/panels/thermal_panel.h"
 #include "spira/ui/views/cell_workspace.h"
 #include "spira/ui/views/interactive_quality.h"
 #include "spira/ui/views/path_inspector.h"
@@ -76,6 +77,7 @@ MainWindow::MainWindow(Document& doc, const PluginRegistry& registry, MainWindow
   selection_ = new PointSelection(this);
   jointChart_ = new JointChart(selection_, this);
   addJointDock();
+  addThermalDock();
 
   planPanel_ = new PlanPanel(doc_, registry_, this);
   addDockWidget(Qt::RightDockWidgetArea, planPanel_);
@@ -143,6 +145,25 @@ void MainWindow::addJointDock()
   });
 }
 
+void MainWindow::addThermalDock()
+{
+  thermal_ = new ThermalPanel(*view_, this);
+  addDockWidget(Qt::BottomDockWidgetArea, thermal_);
+  tabifyDockWidget(log_, thermal_);
+  thermal_->hide();
+  QAction* toggle = thermal_->toggleViewAction();
+  toggle->setText(tr("&Thermal"));
+  toggle->setToolTip(tr("The heat of the build: temperatures over time, collapse risk, probe chart"));
+  connect(selection_, &PointSelection::changed, thermal_, &ThermalPanel::setPoint);
+  connect(toggle, &QAction::toggled, this, [this](bool on) {
+    if (!on) return;
+    QTimer::singleShot(0, this, [this] {
+      thermal_->raise();
+      if (thermal_->height() < 300) resizeDocks({thermal_}, {320}, Qt::Vertical);
+    });
+  });
+}
+
 void MainWindow::createActionsAndTasks()
 {
   QAction* chartToggle = chartDock_->toggleViewAction();
@@ -187,7 +208,12 @@ void MainWindow::createCellWorkspace()
   simulationToggle->setToolTip(tr("Play the planned motion on the cell"));
   for (QWidget* w : actions_.viewIso->associatedWidgets())
     if (auto* viewMenu = qobject_cast<QMenu*>(w))
-      viewMenu->insertActions(log_->toggleViewAction(), {cellToggle, simulationToggle});
+      viewMenu->insertActions(log_->toggleViewAction(),
+                              {cellToggle, simulationToggle, thermal_->toggleViewAction()});
+  // Playing the motion moves the temperatures shown on the part along with the torch.
+  connect(thermal_, &ThermalPanel::partStyleChanged, display_, &DisplayPanel::resultsChanged);
+  connect(cellWorkspace_->simulationPanel(), &SimulationPanel::indexChanged, thermal_,
+          [this](int i) { thermal_->setTimeOfPoint(i); });
   // A point picked on a chart or in 3D also poses the robot there, once the plan's motion is solved.
   connect(selection_, &PointSelection::changed, this, [this](long long i) {
     SimulationPanel* sim = cellWorkspace_->simulationPanel();

@@ -31,6 +31,7 @@ class ExportDialog;
 class CompareView;
 class PathInspector;
 class JointChart;
+class ThermalPanel;
 class CellWorkspace;
 class ComfortFeatures;
 class PointSelection;
@@ -101,6 +102,8 @@ class MainWindow : public QMainWindow {
   // The selected path point, shared by the charts, the 3D view and the status bar.
   PointSelection* pointSelection() const { return selection_; }
   JointChart* jointChart() const { return jointChart_; }
+  // The thermal stage's verdict, time slider and probe chart (hidden until a plan has thermal results).
+  ThermalPanel* thermalPanel() const { return thermal_; }
   QDockWidget* jointDock() const { return jointDock_; }
   CellWorkspace* cellWorkspace() const { return cellWorkspace_; }
   // Placement, presets, themes, help and autosave (comfort_features.h).
@@ -125,6 +128,7 @@ class MainWindow : public QMainWindow {
   // Construction stages (the constructor makes the view and the docks, then calls these in order).
   void addChartDock();
   void addJointDock();
+  void addThermalDock();
   void createActionsAndTasks();
   void createStatusBar();
   void createCellWorkspace();
@@ -172,6 +176,8 @@ class MainWindow : public QMainWindow {
   PointSelection* selection_ = nullptr;
   JointChart* jointChart_ = nullptr;
   QDockWidget* jointDock_ = nullptr;
+  ThermalPanel* thermal_ = nullptr;
+  bool hadThermal_ = false;
   CellWorkspace* cellWorkspace_ = nullptr;
   ComfortFeatures* comfort_ = nullptr;
   ExportDialog* exportDialog_ = nullptr;

@@ -4,6 +4,8 @@
 #include <QLocale>
 
 #include "spira/pipeline/document_plan.h"
+#include "spira/pipeline/planned_path.h"
+#include "spira/pipeline/thermal_schema.h"
 #include "spira/plugin/strategy_name.h"
 #include "spira/ui/charts/joint_chart.h"
 #include "spira/ui/charts/process_chart.h"
@@ -12,6 +14,7 @@
 #include "spira/ui/panels/log_panel.h"
 #include "spira/ui/panels/plan_panel.h"
 #include "spira/ui/panels/stage_progress.h"
+#include "spira/ui/panels/thermal_panel.h"
 #include "spira/ui/views/path_inspector.h"
 #include "spira/ui/views/scene_view.h"
 #include "spira/ui/views/spiral_layer.h"
@@ -56,7 +59,7 @@ void MainWindow::plan()
   planning_ = true;
   actions_.plan->setEnabled(false);
   actions_.cancelPlan->setEnabled(true);
-  planPanel_->progress()->start();
+  planPanel_->progress()->start(thermalStageEnabled(settings.section(PlanSettings::kThermalSection)));
   const PluginRegistry& registry = registry_;  // outlives the window, and so the worker
   tasks_->start(
       tr("Planning %1").arg(fromStd(snapshot->part->name)),
@@ -120,10 +123,19 @@ void MainWindow::refreshResults()
     view_->setPartStyle(PartStyle::Shaded);
   }
   hadSpiral_ = hasSpiral;
-  const Trajectory* path = r.process ? r.process.get() : r.spiral.get();
-  chart_->setPath(path, r.process != nullptr, planWindow(r));
+  const std::shared_ptr<const Trajectory> processed = processPathOf(r);
+  const Trajectory* path = processed ? processed.get() : r.spiral.get();
+  chart_->setPath(path, processed != nullptr, planWindow(r));
   inspector_->setResults(r, placement);
   jointChart_->setKinematics(r.kinematics);
+  thermal_->setResults(r);
+  // New thermal results are what the user enabled the stage for: bring their dock forward.
+  const bool hasThermal = r.thermal != nullptr;
+  if (hasThermal && !hadThermal_) {
+    thermal_->show();
+    thermal_->raise();
+  }
+  hadThermal_ = hasThermal;
   display_->resultsChanged();
 }
 

@@ -1,0 +1,180 @@
+// The optional thermal stage of a plan: off, a plan is what it was; on, it holds what a direct
+// thermal study of the process stage's path gives; cancelled while it runs, nothing is stored.
+#include <atomic>
+#include <cstring>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "builtin_plugins.h"
+#include "spira/base/error.h"
+#include "spira/base/progress.h"
+#include "spira/document/document.h"
+#include "spira/mesh/mesh_primitives.h"
+#include "spira/pipeline/document_plan.h"
+#include "spira/pipeline/planned_path.h"
+#include "spira/pipeline/thermal_stage.h"
+#include "spira/planning/plan_schemas.h"
+
+namespace spira {
+namespace {
+
+// A short open wall: twenty-odd revolutions, a few minutes of welding.
+DocumentState smallWall()
+{
+  Document doc;
+  Part part;
+  part.name = "wall";
+  part.mesh = std::make_shared<const TriangleMesh>(makeOpenCylinder(20.0, 40.0, 48, 20));
+  doc.setPart(part);
+  return doc.state();
+}
+
+void enableThermal(Document& doc)
+{
+  doc.setParam(PlanSettings::kThermalSection, "enabled", true);
+  doc.setParam(PlanSettings::kThermalSection, "frames", ParamValue(std::int64_t{40}));
+  doc.setParam(PlanSettings::kThermalSection, "interpass_max", 300.0);
+}
+
+bool sameBits(const std::vector<double>& a, const std::vector<double>& b)
+{
+  return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(double)) == 0;
+}
+
+TEST(ThermalStage, OffByDefaultAndThePlanIsUnchanged)
+{
+  Document doc(smallWall());
+  NullProgress progress;
+  const DocumentPlan plain = planDocument(doc.state(), builtinRegistry(), progress);
+  EXPECT_FALSE(plain.results.thermal || plain.results.reports.thermal);
+  EXPECT_FALSE(plain.report.contains("thermal"));
+  // Values in the section do nothing while it is off, even ones the stage would refuse.
+  doc.setParam(PlanSettings::kThermalSection, "power", 0.0);
+  doc.setParam(PlanSettings::kThermalSection, "interpass_max", 250.0);
+  const DocumentPlan again = planDocument(doc.state(), builtinRegistry(), progress);
+  EXPECT_FALSE(again.results.thermal);
+  EXPECT_EQ(*again.results.process, *plain.results.process);
+  nlohmann::json a = again.report, b = plain.report;  // wall times differ from run to run
+  a.erase("timings_s"), b.erase("timings_s");
+  EXPECT_EQ(a, b);
+}
+
+TEST(ThermalStage, HoldsWhatADirectStudyOfTheProcessPathGives)
+{
+  Document doc(smallWall());
+  enableThermal(doc);
+  NullProgress progress;
+  const DocumentPlan plan = planDocument(doc.state(), builtinRegistry(), progress);
+  ASSERT_TRUE(plan.results.thermal && plan.results.reports.thermal && plan.results.process);
+  const ThermalStageResult& t = *plan.results.thermal;
+  const ThermalStageReport& rep = *plan.results.reports.thermal;
+
+  const ThermalStageSettings settings = thermalStageSettingsFrom(doc.settings()->section("thermal"));
+  const ThermalStudySettings study = thermalStudySettingsFor(*plan.results.process, settings,
+                                                             beadWidthOf(doc.settings()->section("process")));
+  EXPECT_DOUBLE_EQ(study.mesh.thickness, 5.2);
+  const ThermalStudy direct = runThermalStudy(*plan.results.process, study, progress);
+  ASSERT_EQ(t.pointCount(), plan.results.process->size());
+  EXPECT_TRUE(sameBits(t.peak, direct.result.peak));
+  EXPECT_TRUE(sameBits(t.interpass, direct.result.interpass));
+  EXPECT_TRUE(sameBits(t.timeAboveMelt, direct.result.timeAboveMelt));
+  EXPECT_TRUE(sameBits(t.bond, direct.bond));
+  EXPECT_TRUE(sameBits(t.poolLength, direct.poolLength));
+  EXPECT_EQ(t.nodes, direct.mesh.nodes);
+  EXPECT_EQ(t.triangles.size(), direct.mesh.triangles.size());
+  EXPECT_EQ(rep.riskPoints, direct.riskPoints);
+  EXPECT_EQ(rep.nodes, direct.result.nodes);
+  EXPECT_EQ(rep.steps, direct.result.steps);
+  EXPECT_DOUBLE_EQ(rep.energyIn, direct.result.energy.in);
+  EXPECT_DOUBLE_EQ(rep.maxPeak, *std::max_element(direct.result.peak.begin(), direct.result.peak.end()));
+  EXPECT_EQ(rep.material, "G3Si1");
+  EXPECT_EQ(rep.interpassLimit, 300.0);
+  EXPECT_EQ(rep.pointsOverLimit,
+            std::count_if(t.interpass.begin(), t.interpass.end(), [](double v) { return v > 300.0; }));
+  // The frames: about as many as asked, the last with every node born, within half a step.
+  ASSERT_EQ(t.frames.size(), direct.frames.times.size());
+  EXPECT_GE(t.frames.size(), 40u);
+  const auto& last = direct.frames.values.back();
+  for (size_t n = 0; n < last.size(); n += 97)
+    EXPECT_NEAR(t.frames.at(t.frames.size() - 1, n), last[n], 0.5 * t.frames.step + 1e-3) << n;
+  // The point's node is where the torch laid it.
+  for (size_t i = 0; i < t.pointCount(); i += 50)
+    EXPECT_LT(
+        (t.nodes[static_cast<size_t>(t.pointNode[i])] - plan.results.process->points[i].position).norm(),
+        1e-9)
+        << i;
+  EXPECT_TRUE(plan.report.contains("thermal"));
+  EXPECT_EQ(plan.report["thermal"]["n_risk_points"], rep.riskPoints);
+}
+
+TEST(ThermalStage, CancelledWhileItRunsLeavesThePreviousResults)
+{
+  Document doc(smallWall());
+  NullProgress none;
+  storePlanResults(doc, doc.state(), planDocument(doc.state(), builtinRegistry(), none).results);
+  const Results before = doc.results();
+  ASSERT_TRUE(before.process);
+  enableThermal(doc);
+  doc.setResults(before);  // the previous plan, as if the user enabled the stage and pressed Plan
+  std::atomic<bool> sawThermal{false};
+  CallbackProgress* self = nullptr;
+  CallbackProgress progress([&](double fraction, std::string_view) {
+    if (fraction > 0.8 && fraction < 0.9) {
+      sawThermal = true;
+      self->cancel();
+    }
+  });
+  self = &progress;
+  const DocumentState snapshot = doc.state();
+  EXPECT_THROW(planDocument(snapshot, builtinRegistry(), progress), Cancelled);
+  EXPECT_TRUE(sawThermal);
+  EXPECT_EQ(doc.results(), before);
+  EXPECT_FALSE(doc.results().thermal);
+}
+
+TEST(ThermalStage, ItsProgressSpanSitsBetweenProcessAndKinematics)
+{
+  const auto& spans = planStageSpans();
+  EXPECT_STREQ(spans[kThermalPlanStage].label, "Thermal");
+  EXPECT_EQ(spans[kThermalPlanStage - 1].end, spans[kThermalPlanStage].begin);
+  EXPECT_EQ(spans[kThermalPlanStage].end, spans[kThermalPlanStage + 1].begin);
+  EXPECT_STREQ(spans[kThermalPlanStage + 1].label, "Kinematics");
+  EXPECT_EQ(planStageAt(0.85), kThermalPlanStage);
+}
+
+TEST(ThermalStage, ARePlannedPathIsWhatTheViewsAndExportFollow)
+{
+  Results r;
+  auto process = std::make_shared<Trajectory>();
+  process->points.resize(3);
+  r.setProcess(process);
+  EXPECT_EQ(processPathOf(r), r.process);
+  EXPECT_EQ(plannedPathOf(r).trajectory, r.process);
+  auto thermal = std::make_shared<ThermalStageResult>();
+  r.setThermal(thermal);
+  EXPECT_EQ(processPathOf(r), r.process);  // simulated, not re-planned
+  auto replanned = std::make_shared<Trajectory>();
+  replanned->points.resize(5);
+  thermal->replanned = replanned;
+  EXPECT_EQ(processPathOf(r), replanned);
+  EXPECT_EQ(plannedPathOf(r).trajectory, replanned);
+}
+
+TEST(ThermalStage, BadSettingsAreNamed)
+{
+  ParamSet values;
+  values.set("enabled", true);
+  values.set("power", 0.0);
+  EXPECT_THROW(thermalStageSettingsFrom(values), InputError);
+  values.set("voltage", 20.0);
+  values.set("current", 150.0);
+  EXPECT_DOUBLE_EQ(thermalStageSettingsFrom(values).study.solver.power, 0.8 * 20.0 * 150.0);
+  values.set("material", std::string("unobtainium"));
+  EXPECT_THROW(thermalStageSettingsFrom(values), InputError);
+  EXPECT_FALSE(thermalStageEnabled(ParamSet()));
+  EXPECT_TRUE(thermalSchema().selfCheck().empty());
+}
+
+}  // namespace
+}  // namespace spira
