@@ -19,6 +19,7 @@
 #include "spira/planning/plan_schemas.h"
 #include "spira/planning/trajectory_csv_reader.h"
 #include "spira/thermal/thermal_solver.h"
+#include "thermal_backend.h"
 
 namespace fs = std::filesystem;
 
@@ -177,7 +178,8 @@ constexpr const char* kHelp =
     "usage: spira-cli thermal PLAN_DIR|PROJECT.spira -o DIR [--material NAME] [--power W | --voltage V\n"
     "                         --current A [--efficiency E]] [--dt auto|S] [--probe X,Y,Z]...\n"
     "                         [--sub-segments K] [--divisions F] [--bead-width MM] [--substrate-z Z]\n"
-    "                         [--scheme crank-nicolson|implicit-euler] [--cooling S] [--timing]\n\n"
+    "                         [--scheme crank-nicolson|implicit-euler] [--cooling S] [--timing]\n"
+    "                         [--backend eigen|petsc]\n\n"
     "Simulates the heat of the build along the planned path (docs/thermal.md): a shell of the deposit\n"
     "as thick as the bead, born where the torch lays it, heated by the arc as a moving point source,\n"
     "cooled by the air on both faces and by the substrate. Writes DIR/thermal.json (energy in, stored\n"
@@ -193,8 +195,10 @@ constexpr const char* kHelp =
     "  --bead-width MM   shell thickness (default: the project's bead width, else 5.2 mm)\n"
     "  --substrate-z Z   the plate's plane (default: under the first revolution, its deposit height down)\n"
     "  --cooling S       seconds simulated after the arc stops (default 0)\n"
+    "  --backend NAME    linear solves in this process (eigen, default) or on PETSc (petsc), also across\n"
+    "                    processes: mpirun -n N spira-cli thermal ... --backend petsc (rank 0 writes)\n"
     "Exit codes: 0 done, 2 usage, 3 bad input (unknown material, non-positive power, a time step too long\n"
-    "for the torch, a plan without process channels).\n";
+    "for the torch, a plan without process channels, petsc or mpirun in a build without PETSc).\n";
 
 }  // namespace
 
@@ -205,6 +209,7 @@ int cmdThermal(const std::vector<std::string>& argv)
     std::cout << kHelp;
     return kExitOk;
   }
+  ThermalBackend backend(args);  // first, so that under mpirun only rank 0 reports what is wrong
   const bool timing = args.takeSwitch("--timing");
   const std::string outDir = args.takeOption("-o");
   ThermalSettings settings;
@@ -248,7 +253,9 @@ int cmdThermal(const std::vector<std::string>& argv)
   const ThermalMesh shell = buildThermalMesh(source.trajectory, mesh);
   const double meshSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   NullProgress progress;
+  backend.start(settings);
   const ThermalResult result = simulateThermal(shell, settings, progress);
+  if (!backend.writes()) return kExitOk;  // under mpirun, rank 0 writes
 
   // Everything is computed before the first file is written.
   const nlohmann::json report = thermalJson(result, settings, mesh, meshSeconds);
