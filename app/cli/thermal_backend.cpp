@@ -56,10 +56,11 @@ ThermalBackend::ThermalBackend(Args& args)
                      "write --backend eigen (in-process) or --backend petsc (PETSc, MPI)");
   const std::string processes = std::to_string(launch.size) + " processes of an MPI launch";
   if (!SPIRA_WITH_PETSC && (name_ == "petsc" || launch.size > 1))
-    throw InputError("this spira-cli was built without PETSc, so it cannot run the thermal model " +
-                         (launch.size > 1 ? "on " + processes : std::string("on --backend petsc")),
-                     "install libpetsc-real-dev (packaging/install-deps.sh) and rebuild (CMake finds it: "
-                     "SPIRA_WITH_PETSC), or run without mpirun and --backend petsc");
+    throw InputError(
+        "this spira-cli was built without PETSc, so it cannot run the thermal model " +
+            (launch.size > 1 ? "on " + processes : std::string("with --backend petsc")),
+        "install libpetsc-real-dev (packaging/install-deps.sh does) and rebuild: CMake then builds the "
+        "backend (SPIRA_WITH_PETSC); or run without mpirun and --backend petsc");
   if (name_ == "eigen" && launch.size > 1)
     throw UsageError("--backend eigen solves in one process, but this is one of " + processes +
                          ": each would simulate the whole build alone",

@@ -67,7 +67,7 @@ TEST_F(CliThermalBackend, PetscAndMpiLaunchesExitThreeInABuildWithoutPetsc)
 {
   CliRun r = thermal({"--backend", "petsc"});
   EXPECT_EQ(r.exitCode, 3) << r.err;
-  EXPECT_NE(r.err.find("built without PETSc, so it cannot run the thermal model on --backend petsc"),
+  EXPECT_NE(r.err.find("built without PETSc, so it cannot run the thermal model with --backend petsc"),
             std::string::npos)
       << r.err;
   EXPECT_NE(r.err.find("install libpetsc-real-dev"), std::string::npos) << r.err;
