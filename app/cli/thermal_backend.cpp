@@ -82,6 +82,8 @@ void ThermalBackend::start(ThermalSettings& settings)
   rank_ = session_->rank();
   settings.linearSolver = petscThermalSolver();
   if (rank_ != 0) silence();
+  std::cout << "backend: PETSc on " << session_->size() << " MPI process"
+            << (session_->size() > 1 ? "es" : "") << "\n";
 #else
   static_cast<void>(settings);
 #endif

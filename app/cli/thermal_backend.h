@@ -26,7 +26,7 @@ class ThermalBackend {
   ThermalBackend(const ThermalBackend&) = delete;
   ThermalBackend& operator=(const ThermalBackend&) = delete;
 
-  // Starts PETSc (MPI) for petsc and sets the settings' solver.
+  // Starts PETSc (MPI) for petsc, says so and sets the settings' solver.
   void start(ThermalSettings& settings);
   // Whether this process writes the results: false on the ranks other than 0.
   bool writes() const { return rank_ == 0; }

@@ -132,6 +132,7 @@ TEST_F(CliThermalMpi, TwoRanksGiveTheInProcessResultsWrittenOnce)
   ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
   EXPECT_EQ(countOf(r.out, "wrote "), 1u) << r.out;
   EXPECT_EQ(countOf(r.out, "thermal: "), 1u) << r.out;
+  EXPECT_EQ(countOf(r.out, "backend: PETSc on 2 MPI processes\n"), 1u) << r.out;
   expectSameResults(eigen(), out);
 }
 
@@ -140,6 +141,7 @@ TEST_F(CliThermalMpi, OneProcessWithoutMpiexecGivesTheInProcessResults)
   const fs::path out = tmp_ / "one";
   const CliRun r = runCli(thermalArgs(out, "petsc"));
   ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.out.find("backend: PETSc on 1 MPI process\n"), std::string::npos) << r.out;
   expectSameResults(eigen(), out);
 }
 
@@ -148,6 +150,7 @@ TEST_F(CliThermalMpi, AnMpiLaunchRunsPetscUnlessToldAndRefusesEigen)
   const fs::path out = tmp_ / "default";
   CliRun r = onTwoRanks(thermalArgs(out, ""));
   ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("backend: PETSc on 2 MPI processes\n"), std::string::npos) << r.out;
   expectSameResults(eigen(), out);
 
   const fs::path refused = tmp_ / "refused";
