@@ -30,7 +30,6 @@ class ThermalBackend {
   void start(ThermalSettings& settings);
   // Whether this process writes the results: false on the ranks other than 0.
   bool writes() const { return rank_ == 0; }
-  const std::string& name() const { return name_; }
 
  private:
   // Drops this process's output for the rest of its life (rank > 0).
