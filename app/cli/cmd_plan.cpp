@@ -8,6 +8,7 @@
 #include "cli_common.h"
 #include "part_loading.h"
 #include "part_placement.h"
+#include "part_plan.h"
 #include "robot_output.h"
 #include "spira/base/atomic_file.h"
 #include "spira/base/error.h"
@@ -32,18 +33,6 @@ namespace fs = std::filesystem;
 
 namespace spira::cli {
 namespace {
-
-// The part as a document holds it: placed (the mesh moved or cut), standing on the plate.
-std::shared_ptr<const Part> partOf(ImportedPart imported, const std::string& file, int lowerLoop)
-{
-  auto part = std::make_shared<Part>();
-  part->name = fs::path(file).stem().string();
-  part->sourcePath = file;
-  part->sourceUnit = imported.sourceUnit;
-  part->mesh = std::make_shared<const TriangleMesh>(std::move(imported.mesh));
-  part->lowerBoundaryOverride = lowerLoop;
-  return part;
-}
 
 void printSummary(const DocumentPlan& done, std::ostream& out)
 {
@@ -85,8 +74,7 @@ void printSummary(const DocumentPlan& done, std::ostream& out)
 int cmdPlan(const std::vector<std::string>& argv)
 {
   const PluginRegistry& registry = builtinRegistry();
-  ImporterFlags importFlags(registry);
-  PlanFlags planFlags(registry);
+  PartPlanFlags partFlags(registry);
   Args args = splitArgs(argv);
   for (size_t i = 0; i < args.rest.size(); ++i)
     if (fs::path(args.rest[i]).extension() == kProjectExtension && (i == 0 || args.rest[i - 1] != "-o") &&
@@ -97,8 +85,7 @@ int cmdPlan(const std::vector<std::string>& argv)
   const std::string format = args.takeOption("--export");
   const ExporterPlugin* exporter = format.empty() ? nullptr : &exporterFor(registry, format);
   ParamSet exporterValues, prepValues;
-  std::vector<FlagTarget> targets = planFlags.targets;
-  targets.insert(targets.end(), importFlags.targets().begin(), importFlags.targets().end());
+  std::vector<FlagTarget> targets = partFlags.targets();
   if (exporter) {
     targets.push_back(FlagTarget{exporter->id(), &exporter->schema(), &exporterValues});
     targets.push_back(FlagTarget{std::string(prepSection().name), &prepSchema(), &prepValues});
@@ -133,55 +120,33 @@ int cmdPlan(const std::vector<std::string>& argv)
     return kExitOk;
   }
   const std::string outDir = args.takeOption("-o");
-  std::string strategy = args.takeOption("--strategy");
-  const PartPlacement placement = PartPlacement::take(args);
+  partFlags.take(args);
   const bool timing = args.takeSwitch("--timing");
   const bool keepCollisions = args.takeSwitch("--keep-collisions");
-  const bool noMidSurface = args.takeSwitch("--no-mid-surface");
   args.rest = takeParamFlags(args.rest, targets);
   const auto positional = args.finish("plan", 1, 1);
   if (outDir.empty()) throw UsageError("'plan' needs an output folder", "write -o DIR");
-  if (strategy.empty()) strategy = strategyName(kDefaultDecomposerId);
   if (exporter && cellFile.empty())
     std::cerr << "note: no --cell given: the program's targets are torch poses in the part frame\n";
 
   ensureWritableDirectory(outDir);
   // Everything the user named is read before the (long) planning starts.
-  DocumentState snapshot;
+  std::shared_ptr<const CellRecord> cellRecord;
   std::optional<RobotCell> cell;  // checked now, and what the program is solved on
   if (!cellFile.empty()) {
-    snapshot.cell = std::make_shared<const CellRecord>(readCellFile(cellFile));
-    cell.emplace(*snapshot.cell);
+    cellRecord = std::make_shared<const CellRecord>(readCellFile(cellFile));
+    cell.emplace(*cellRecord);
     if (!cell->canSolve()) throw InputError(cell->ikRefusal(), "choose a cell with a 6-axis arm");
     // The robot's link meshes are read in the import helper after planning: it loads meanwhile.
     prestartImportHelper();
   }
   const PrepParams prep = prepParamsFrom(prepValues);
 
-  const auto t0 = std::chrono::steady_clock::now();
   NullProgress progress;
-  ImportedPart imported = importFlags.import(positional[0], progress);
-  for (const auto& w : imported.warnings) std::cerr << "warning: " << w << "\n";
-  const PlacementChange placed = placement.apply(imported);
-  std::cout << placed.text(placement.substrateZ);
-  const double importSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  snapshot.part = partOf(std::move(imported), positional[0], placement.lowerLoop);
-  Substrate plate;
-  plate.planeZ = placement.substrateZ;
-  snapshot.substrate = std::make_shared<const Substrate>(std::move(plate));
-  snapshot.settings = std::make_shared<const PlanSettings>(
-      PlanSettings{decomposerIdOf(strategy), PlanSettings::kDefaultClosureFinder, planFlags.values});
-
-  PlanDocumentOptions options;
-  options.midSurfaceOfSolid = !noMidSurface;
-  options.resolveCollisions = !keepCollisions;
-  DocumentPlan plan = planDocument(snapshot, registry, progress, options);
-  if (plan.output.solid) std::cout << plan.output.solid->summary() << "\n";
+  PlannedPart part = planPartFile(registry, positional[0], partFlags, cellRecord, keepCollisions, progress);
+  DocumentPlan& plan = part.plan;
   nlohmann::json& report = plan.report;
-  report["dropped_mm"] = placed.dropped;
-  if (placed.levelled) report["levelled_base"] = {{"cut_z_mm", placed.cutZ}, {"removed_mm", placed.removed}};
-  if (snapshot.cell) report["cell_file"] = std::filesystem::absolute(cellFile).lexically_normal().string();
-  report["timings_s"]["import"] = importSeconds;
+  if (cellRecord) report["cell_file"] = std::filesystem::absolute(cellFile).lexically_normal().string();
 
   const Results& r = plan.results;
   const PlannedPath planned = plannedPathOf(r);

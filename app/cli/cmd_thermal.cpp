@@ -8,18 +8,26 @@
 
 #include <nlohmann/json.hpp>
 
+#include "builtin_plugins.h"
 #include "cli_common.h"
+#include "part_plan.h"
 #include "spira/base/atomic_file.h"
 #include "spira/base/error.h"
 #include "spira/base/number_text.h"
 #include "spira/base/output_set.h"
 #include "spira/base/progress.h"
 #include "spira/document/document.h"
+#include "spira/document/plan_report.h"
+#include "spira/document/project_file.h"
 #include "spira/pipeline/planned_path.h"
+#include "spira/planning/plan_files.h"
 #include "spira/planning/plan_schemas.h"
 #include "spira/planning/trajectory_csv_reader.h"
-#include "spira/thermal/thermal_solver.h"
+#include "spira/thermal/thermal_replan.h"
+#include "spira/thermal/thermal_study.h"
+#include "spira/thermal/thermal_vtk.h"
 #include "thermal_backend.h"
+#include "thermal_outputs.h"
 
 namespace fs = std::filesystem;
 
@@ -32,6 +40,8 @@ constexpr double kDefaultEfficiency = 0.8;  // GMAW/CMT arc efficiency, DuPont &
 struct ThermalSource {
   Trajectory trajectory;
   std::optional<double> beadWidth;  // mm, from a project's process settings
+  ProcessLimits limits;             // a project's, else the product's defaults
+  nlohmann::json report;            // the plan's report.json, for a re-planned one
 };
 
 ThermalSource readSource(const fs::path& input)
@@ -40,6 +50,9 @@ ThermalSource readSource(const fs::path& input)
   if (fs::is_directory(input)) {
     verifyOutputSet(input);
     s.trajectory = readTrajectoryCsv(input / "trajectory.csv");
+    if (fs::exists(input / "report.json"))
+      s.report = nlohmann::json::parse(readFile(input / "report.json"), nullptr, false);
+    if (s.report.is_discarded()) s.report = nlohmann::json::object();
     return s;
   }
   Document doc;
@@ -49,7 +62,10 @@ ThermalSource readSource(const fs::path& input)
     throw InputError("the project '" + input.string() + "' holds no planned trajectory",
                      "plan it first (Plan in Spira, or spira-cli plan PROJECT --save), then simulate it");
   s.trajectory = *planned.trajectory;
-  s.beadWidth = readPlanSections(doc.settings()->params).process.beadWidth;
+  const ProcessSettings process = readPlanSections(doc.settings()->params).process;
+  s.beadWidth = process.beadWidth;
+  s.limits = process.limits;
+  s.report = mergedPlanReport(doc.results());
   return s;
 }
 
@@ -85,10 +101,15 @@ double positiveValue(const std::string& flag, const std::string& text, const std
   return v;
 }
 
-double arcPowerFrom(Args& args)
+// The arc power of --power or --voltage/--current/--efficiency; none of them may be given with
+// --energy-per-wire (`perWire`).
+double arcPowerFrom(Args& args, bool perWire)
 {
   const std::string power = args.takeOption("--power"), voltage = args.takeOption("--voltage"),
                     current = args.takeOption("--current"), efficiency = args.takeOption("--efficiency");
+  if (perWire && (!power.empty() || !voltage.empty() || !current.empty() || !efficiency.empty()))
+    throw UsageError("--energy-per-wire and --power/--voltage/--current both give the arc power",
+                     "give --power W, --voltage V --current A [--efficiency E], or --energy-per-wire J");
   if (!power.empty() && (!voltage.empty() || !current.empty() || !efficiency.empty()))
     throw UsageError("--power and --voltage/--current/--efficiency both give the arc power",
                      "give --power W, or --voltage V --current A [--efficiency E]");
@@ -102,121 +123,121 @@ double arcPowerFrom(Args& args)
                                      : finiteNumberFlag("--efficiency", efficiency, "--efficiency 0.8"));
 }
 
-std::string pointsCsv(const ThermalResult& r)
-{
-  std::string out = "index,peak_C,interpass_C,below_at_arrival_C,time_above_melt_s\n";
-  for (size_t i = 0; i < r.peak.size(); ++i) {
-    appendNumber(out, static_cast<long long>(i));
-    for (double v : {r.peak[i], r.interpass[i], r.belowAtArrival[i], r.timeAboveMelt[i]}) {
-      out += ',';
-      appendNumber(out, v);
-    }
-    out += '\n';
-  }
-  return out;
-}
-
-std::string probesCsv(const ThermalResult& r)
-{
-  std::string out = "t";
-  for (int node : r.probeNodes) out += ",node_" + std::to_string(node) + "_C";
-  out += '\n';
-  for (size_t k = 0; k < r.probeTimes.size(); ++k) {
-    appendNumber(out, r.probeTimes[k]);
-    for (const auto& history : r.probeTemperatures) {
-      out += ',';
-      appendNumber(out, history[k]);
-    }
-    out += '\n';
-  }
-  return out;
-}
-
-double maxOf(const std::vector<double>& v)
-{
-  return v.empty() ? 0.0 : *std::max_element(v.begin(), v.end());
-}
-
-nlohmann::json thermalJson(const ThermalResult& r, const ThermalSettings& s, const ThermalMeshSettings& m,
-                           double meshSeconds)
-{
-  size_t aboveMeltAtInterpass = 0;
-  for (double t : r.interpass) aboveMeltAtInterpass += t >= s.material.meltingTemperature;
-  return {{"material",
-           {{"name", s.material.name},
-            {"density_kg_m3", s.material.density},
-            {"conductivity_W_mK", s.material.conductivity},
-            {"specific_heat_J_kgK", s.material.specificHeat},
-            {"melting_C", s.material.meltingTemperature},
-            {"source", s.material.source}}},
-          {"power_W", s.power},
-          {"scheme", s.scheme == ThermalScheme::CrankNicolson ? "crank_nicolson" : "implicit_euler"},
-          {"time_step_s", s.timeStep > 0.0 ? nlohmann::json(s.timeStep) : nlohmann::json("auto")},
-          {"sub_segments", m.subSegments},
-          {"divisions", m.divisions},
-          {"substrate_z_mm", m.substrateZ},
-          {"shell_thickness_mm", m.thickness},
-          {"h_air_W_m2K", s.films.air},
-          {"h_substrate_W_m2K", s.films.substrate},
-          {"energy_in_J", r.energy.in},
-          {"energy_stored_J", r.energy.stored},
-          {"energy_lost_J", r.energy.lost},
-          {"energy_imbalance_J", r.energy.imbalance()},
-          {"max_peak_C", maxOf(r.peak)},
-          {"max_interpass_C", maxOf(r.interpass)},
-          {"n_points_molten_below_at_interpass", aboveMeltAtInterpass},
-          {"n_nodes", r.nodes},
-          {"n_elements", r.elements},
-          {"n_steps", r.steps},
-          {"simulated_time_s", r.simulatedTime},
-          {"mean_unknowns_per_step", r.meanWindow},
-          {"mean_solver_iterations", r.solverIterations},
-          {"timings_s", {{"mesh", meshSeconds}, {"simulation", r.seconds}, {"solver", r.solverSeconds}}}};
-}
-
 constexpr const char* kHelp =
-    "usage: spira-cli thermal PLAN_DIR|PROJECT.spira -o DIR [--material NAME] [--power W | --voltage V\n"
-    "                         --current A [--efficiency E]] [--dt auto|S] [--probe X,Y,Z]...\n"
+    "usage: spira-cli thermal PLAN_DIR|PROJECT.spira|PART [plan flags] -o DIR [--material NAME]\n"
+    "                         [--power W | --voltage V --current A [--efficiency E] |\n"
+    "                         --energy-per-wire J] [--dt auto|S] [--probe X,Y,Z]...\n"
     "                         [--sub-segments K] [--divisions F] [--bead-width MM] [--substrate-z Z]\n"
-    "                         [--scheme crank-nicolson|implicit-euler] [--cooling S] [--timing]\n"
+    "                         [--source-radius R] [--emissivity E]\n"
+    "                         [--scheme crank-nicolson|implicit-euler] [--cooling S] [--frames N]\n"
+    "                         [--interpass-max C [--remedy heat]] [--timing]\n"
     "                         [--backend eigen|petsc]\n\n"
     "Simulates the heat of the build along the planned path (docs/thermal.md): a shell of the deposit\n"
-    "as thick as the bead, born where the torch lays it, heated by the arc as a moving point source,\n"
+    "as thick as the bead, born where the torch lays it, heated by the moving arc,\n"
     "cooled by the air on both faces and by the substrate. Writes DIR/thermal.json (energy in, stored\n"
     "and lost, the highest peak and interpass temperatures, nodes, steps, times), DIR/thermal_points.csv\n"
     "(per planned point: peak, interpass - the lowest the deposit below it cooled to before the torch\n"
     "came back -, the temperature below at the torch's arrival, the time above melting) and\n"
-    "DIR/probes.csv (temperature against time at each --probe, the nearest node).\n\n"
+    "DIR/probes.csv (temperature against time at each --probe, the nearest node), and the field over\n"
+    "time as a ParaView series, DIR/thermal.pvd with DIR/thermal_NNNN.vtu.\n"
+    "With --interpass-max, re-plans the path until no interpass temperature exceeds the limit and\n"
+    "writes the re-planned DIR/trajectory.csv and DIR/report.json with the thermal files, as one set.\n"
+    "A PART file (mesh or CAD) is planned first as 'spira-cli plan' plans it, with its flags (below);\n"
+    "its trajectory.csv and report.json are written with the thermal files.\n\n"
     "  --material NAME   G3Si1 (default, the source's steel), 316L, Ti-6Al-4V, AlMg5\n"
     "  --power W         arc power reaching the part (default 1000 W, the source's base case), or\n"
-    "  --voltage V --current A [--efficiency E]   its product (E default 0.8)\n"
+    "  --voltage V --current A [--efficiency E]   its product (E default 0.8), or\n"
+    "  --energy-per-wire J   the arc's energy per mm of wire fed (a synergic line): the power follows\n"
+    "                    the wire feed point by point\n"
     "  --dt auto|S       time step; auto (default) moves the torch one sub-segment per step\n"
     "  --sub-segments K  mesh sub-segments per planned segment (default 1); --divisions F across a layer\n"
     "  --bead-width MM   shell thickness (default: the project's bead width, else 5.2 mm)\n"
     "  --substrate-z Z   the plate's plane (default: under the first revolution, its deposit height down)\n"
+    "  --source-radius R the arc as a Gaussian flux of radius R, mm (default half the bead width);\n"
+    "                    0: the source's point load (peaks and pool then depend on the mesh)\n"
     "  --cooling S       seconds simulated after the arc stops (default 0)\n"
+    "  --emissivity E    radiation from both faces of the laid wall, E in [0, 1] (default 0: none,\n"
+    "                    the source's model)\n"
+    "  --frames N        frames of the field in the ParaView series (default 50; 0: none)\n"
+    "  --interpass-max C the highest interpass temperature allowed, C\n"
+    "  --remedy heat     how to re-plan: heat slows the wire feed and the travel speed together where\n"
+    "                    the limit is exceeded (same deposit, same spiral, less power; down to the\n"
+    "                    process's slowest speeds); the arc power then follows the wire feed\n"
     "  --backend NAME    linear solves in this process (eigen, default) or on PETSc (petsc), also across\n"
     "                    processes: mpirun -n N spira-cli thermal ... --backend petsc (rank 0 writes)\n"
     "Exit codes: 0 done, 2 usage, 3 bad input (unknown material, non-positive power, a time step too long\n"
-    "for the torch, a plan without process channels, petsc or mpirun in a build without PETSc).\n";
+    "for the torch, a plan without process channels, petsc or mpirun in a build without PETSc), 4 the\n"
+    "interpass limit cannot be met (the best re-planned path and its thermal files are still written, to\n"
+    "inspect) or the planned PART is not feasible.\n\n"
+    "Plan flags, for a PART:\n"
+    "  --strategy NAME    the decomposition (default isovalue); --no-mid-surface refuses a solid\n";
 
 }  // namespace
+
+// Whether the command names a part file: no plan folder and no project among its arguments (the
+// flags' values are numbers and names, never folders).
+bool isPartInput(const std::vector<std::string>& rest)
+{
+  for (const std::string& a : rest) {
+    std::error_code ec;
+    if (fs::is_directory(a, ec) || fs::path(a).extension() == kProjectExtension) return false;
+  }
+  for (const std::string& a : rest) {
+    std::error_code ec;
+    if (a.rfind("-", 0) != 0 && fs::is_regular_file(a, ec)) return true;
+  }
+  return false;
+}
+
+// --remedy: the remedies this version re-plans with.
+void checkRemedies(const std::string& text)
+{
+  std::stringstream in(text);
+  std::string item;
+  while (std::getline(in, item, ','))
+    if (item != "heat")
+      throw UsageError("--remedy " + item + " is not a remedy this version applies",
+                       "write --remedy heat (the deposit and dwell remedies are not available yet)");
+}
+
+void printStudy(const ThermalStudy& thermal, const ThermalSettings& settings, const nlohmann::json& report)
+{
+  const ThermalResult& result = thermal.result;
+  std::cout << "thermal: " << result.nodes << " nodes, " << result.steps << " steps, "
+            << significantText(result.simulatedTime, 4) << " s of build simulated in "
+            << significantText(result.seconds, 3) << " s\n"
+            << "peak " << significantText(report["max_peak_C"].get<double>(), 4) << " C, interpass up to "
+            << significantText(report["max_interpass_C"].get<double>(), 4) << " C (" << settings.material.name
+            << " melts at " << significantText(settings.material.meltingTemperature, 4) << " C), "
+            << thermal.riskPoints << " point(s) at risk of collapse\n"
+            << "energy: in " << significantText(result.energy.in, 4) << " J, stored "
+            << significantText(result.energy.stored, 4) << " J, lost "
+            << significantText(result.energy.lost, 4) << " J\n";
+}
 
 int cmdThermal(const std::vector<std::string>& argv)
 {
   Args args = splitArgs(argv);
   if (args.takeSwitch("--help")) {
-    std::cout << kHelp;
+    const PartPlanFlags flags(builtinRegistry());
+    std::cout << kHelp << kPlacementHelp << paramFlagsHelp(flags.targets());
     return kExitOk;
   }
   ThermalBackend backend(args);  // first, so that under mpirun only rank 0 reports what is wrong
   const bool timing = args.takeSwitch("--timing");
   const std::string outDir = args.takeOption("-o");
-  ThermalSettings settings;
-  ThermalMeshSettings mesh;
+  ThermalStudySettings study;
+  ThermalSettings& settings = study.solver;
+  ThermalMeshSettings& mesh = study.mesh;
   if (const std::string name = args.takeOption("--material"); !name.empty())
     settings.material = thermalMaterialPreset(name);
-  settings.power = arcPowerFrom(args);
+  if (const std::string e = args.takeOption("--emissivity"); !e.empty()) {
+    settings.material.emissivity = finiteNumberFlag("--emissivity", e, "--emissivity 0.8");
+    validateThermalMaterial(settings.material);
+  }
+  const std::string perWire = args.takeOption("--energy-per-wire");
+  settings.power = arcPowerFrom(args, !perWire.empty());
+  if (!perWire.empty()) settings.powerPerWireFeed = positiveValue("--energy-per-wire", perWire, "J/mm");
   if (const std::string dt = args.takeOption("--dt"); !dt.empty() && dt != "auto")
     settings.timeStep = positiveValue("--dt", dt, "s");
   for (std::string p = args.takeOption("--probe"); !p.empty(); p = args.takeOption("--probe"))
@@ -226,7 +247,8 @@ int cmdThermal(const std::vector<std::string>& argv)
   if (const std::string f = args.takeOption("--divisions"); !f.empty())
     mesh.divisions = static_cast<int>(wholeNumberFlag("--divisions", f, 1, 16, "--divisions 2"));
   const std::string beadWidth = args.takeOption("--bead-width"),
-                    substrateZ = args.takeOption("--substrate-z");
+                    substrateZ = args.takeOption("--substrate-z"),
+                    radius = args.takeOption("--source-radius");
   if (const std::string scheme = args.takeOption("--scheme"); !scheme.empty()) {
     if (scheme == "implicit-euler")
       settings.scheme = ThermalScheme::ImplicitEuler;
@@ -236,46 +258,117 @@ int cmdThermal(const std::vector<std::string>& argv)
   }
   if (const std::string cooling = args.takeOption("--cooling"); !cooling.empty())
     settings.coolingTime = finiteNumberFlag("--cooling", cooling, "--cooling 600");
+  study.frames = 50;
+  if (const std::string frames = args.takeOption("--frames"); !frames.empty())
+    study.frames = static_cast<int>(wholeNumberFlag("--frames", frames, 0, 10000, "--frames 50"));
+  ThermalReplanSettings replan;
+  if (const std::string limit = args.takeOption("--interpass-max"); !limit.empty())
+    replan.interpassMax = finiteNumberFlag("--interpass-max", limit, "--interpass-max 250");
+  const std::string remedy = args.takeOption("--remedy");
+  if (!remedy.empty() && replan.interpassMax == 0.0)
+    throw UsageError("--remedy needs --interpass-max", "write --interpass-max 250 --remedy heat");
+  checkRemedies(remedy);
+  // A part file is planned first, with the flags of 'plan'; a plan folder or a project is read.
+  const PluginRegistry& registry = builtinRegistry();
+  std::optional<PartPlanFlags> partFlags;
+  if (isPartInput(args.rest)) {
+    partFlags.emplace(registry);
+    partFlags->take(args);
+    args.rest = takeParamFlags(args.rest, partFlags->targets());
+  }
   const auto positional = args.finish("thermal", 1, 1);
   if (outDir.empty()) throw UsageError("'thermal' needs an output folder", "write -o DIR");
   const fs::path input = positional[0];
   if (!fs::exists(input))
     throw InputError("'" + input.string() + "' does not exist",
-                     "give the -o folder of 'spira-cli plan' or a planned .spira project");
+                     "give a part file, the -o folder of 'spira-cli plan' or a planned .spira project");
   ensureWritableDirectory(outDir);
 
-  const ThermalSource source = readSource(input);
+  NullProgress progress;
+  ThermalSource source;
+  bool planFeasible = true;
+  if (partFlags) {
+    if (!substrateZ.empty())
+      partFlags->placement.substrateZ = finiteNumberFlag("--substrate-z", substrateZ, "--substrate-z 0");
+    PlannedPart part = planPartFile(registry, input.string(), *partFlags, nullptr, false, progress);
+    const PlannedPath planned = plannedPathOf(part.plan.results);
+    source.trajectory = *planned.trajectory;
+    const ProcessSettings process = readPlanSections(partFlags->planFlags.values).process;
+    source.beadWidth = process.beadWidth;
+    source.limits = process.limits;
+    source.report = std::move(part.plan.report);
+    planFeasible = part.plan.feasible;
+    std::cout << "planned " << input.filename().string() << ": " << source.trajectory.size() << " points, "
+              << (planFeasible ? "feasible" : "INFEASIBLE (see report.json)") << "\n";
+  } else {
+    source = readSource(input);
+  }
   mesh.thickness = beadWidth.empty() ? source.beadWidth.value_or(ProcessSettings{}.beadWidth)
                                      : positiveValue("--bead-width", beadWidth, "mm");
   mesh.substrateZ = substrateZ.empty() ? substratePlaneOf(source.trajectory)
                                        : finiteNumberFlag("--substrate-z", substrateZ, "--substrate-z 0");
-  const auto start = std::chrono::steady_clock::now();
-  const ThermalMesh shell = buildThermalMesh(source.trajectory, mesh);
-  const double meshSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  NullProgress progress;
+  settings.sourceRadius = radius.empty() ? 0.5 * mesh.thickness
+                                         : finiteNumberFlag("--source-radius", radius, "--source-radius 2.6");
   backend.start(settings);
-  const ThermalResult result = simulateThermal(shell, settings, progress);
-  if (!backend.writes()) return kExitOk;  // under mpirun, rank 0 writes
 
   // Everything is computed before the first file is written.
-  const nlohmann::json report = thermalJson(result, settings, mesh, meshSeconds);
-  writeFileAtomically(fs::path(outDir) / "thermal_points.csv", pointsCsv(result));
-  writeFileAtomically(fs::path(outDir) / "probes.csv", probesCsv(result));
-  writeFileAtomically(fs::path(outDir) / "thermal.json", report.dump(2) + "\n");
-  std::cout << "thermal: " << result.nodes << " nodes, " << result.steps << " steps, "
-            << significantText(result.simulatedTime, 4) << " s of build simulated in "
-            << significantText(result.seconds, 3) << " s\n"
-            << "peak " << significantText(report["max_peak_C"].get<double>(), 4) << " C, interpass up to "
-            << significantText(report["max_interpass_C"].get<double>(), 4) << " C (" << settings.material.name
-            << " melts at " << significantText(settings.material.meltingTemperature, 4) << " C)\n"
-            << "energy: in " << significantText(result.energy.in, 4) << " J, stored "
-            << significantText(result.energy.stored, 4) << " J, lost "
-            << significantText(result.energy.lost, 4) << " J\n";
+  const auto start = std::chrono::steady_clock::now();
+  std::optional<ThermalReplanOutcome> outcome;
+  ThermalStudy thermal;
+  if (replan.interpassMax > 0.0) {
+    replan.limits = source.limits;
+    if (!(settings.powerPerWireFeed > 0.0))
+      settings.powerPerWireFeed = powerPerWireFeedOf(source.trajectory, settings.power);
+    outcome = replanForInterpass(source.trajectory, study, replan, progress);
+    thermal = std::move(outcome->study);
+  } else {
+    thermal = runThermalStudy(source.trajectory, study, progress);
+  }
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  nlohmann::json report = thermalJson(thermal, study);
+  if (outcome) {
+    report["replan"] = replanJson(*outcome, replan, thermal);
+    report["timings_s"]["replan"] = seconds;
+  }
+  if (!backend.writes()) return kExitOk;  // under mpirun, rank 0 writes
+  // A planned part or a re-planned path is written with its thermal history, as one plan set.
+  const bool withPlan = partFlags || outcome;
+  std::vector<OutputFile> files;
+  if (withPlan) {
+    files.push_back({"trajectory.csv", trajectoryCsv(outcome ? outcome->trajectory : source.trajectory)});
+    const nlohmann::json planReport =
+        outcome ? replannedReport(source.report, *outcome, replan, thermal) : source.report;
+    files.push_back({"report.json", planReport.dump(2) + "\n"});
+  }
+  files.push_back({"thermal.json", report.dump(2) + "\n", withPlan});
+  files.push_back({"thermal_points.csv", thermalPointsCsv(thermal), withPlan});
+  files.push_back({"probes.csv", thermalProbesCsv(thermal.result), withPlan});
+  for (OutputFile& f : thermalTimeSeries(thermal, "thermal")) {
+    f.thermal = withPlan;
+    files.push_back(std::move(f));
+  }
+  replaceOutputSet(outDir, withPlan ? OutputKind::Plan : OutputKind::Thermal, files);
+
+  printStudy(thermal, settings, report);
+  if (outcome)
+    std::cout << "re-planned for an interpass limit of " << significantText(replan.interpassMax, 4)
+              << " C: " << outcome->revolutionsChanged << " revolution(s) slowed (down to "
+              << significantText(100.0 * outcome->slowestFactor, 3) << " % speed), build time +"
+              << significantText(outcome->buildTimeAdded, 4) << " s, " << outcome->rounds
+              << " re-simulation(s) in " << significantText(seconds, 3) << " s\n";
   if (timing)
-    for (const auto& [stage, seconds] : report["timings_s"].items())
-      std::cout << "timing " << stage << ": " << seconds.get<double>() << " s\n";
-  std::cout << "wrote " << outDir << "/thermal.json, thermal_points.csv and probes.csv\n";
-  return kExitOk;
+    for (const auto& [stage, t] : report["timings_s"].items())
+      std::cout << "timing " << stage << ": " << t.get<double>() << " s\n";
+  std::cout << "wrote " << (withPlan ? outDir + "/trajectory.csv, report.json, " : outDir + "/")
+            << "thermal.json, thermal_points.csv, probes.csv and thermal.pvd\n";
+  if (outcome && !outcome->limitMet) {
+    std::cerr << "error: the interpass limit cannot be met: " << outcome->why << "\n"
+              << "hint: raise --interpass-max (the best reached is "
+              << significantText(report["max_interpass_C"].get<double>(), 4)
+              << " C), or lower the power or the process's slowest speeds\n";
+    return kExitInfeasible;
+  }
+  return planFeasible ? kExitOk : kExitInfeasible;
 }
 
 }  // namespace spira::cli

@@ -79,6 +79,41 @@ TEST(OutputSet, AProgramReplacesItsPreviousFilesAndKeepsThePlanAndOtherPrograms)
   EXPECT_NO_THROW(verifyOutputSet(dir));
 }
 
+// A thermal history belongs to the plan beside it like a program: it replaces the previous history
+// (5 frames then 2: no stale frame), keeps the plan and the programs, and goes with the plan. A
+// re-planned plan carries its own history, which the next thermal set replaces.
+TEST(OutputSet, AThermalHistoryReplacesThePreviousOneAndGoesWithThePlan)
+{
+  test::TempDir tmp;
+  const fs::path dir = tmp / "plan";
+  fs::create_directory(dir);
+  replaceOutputSet(dir, OutputKind::Plan, kPlan);
+  replaceOutputSet(dir, OutputKind::Program, {{"a.src", "1"}});
+  replaceOutputSet(dir, OutputKind::Thermal,
+                   {{"thermal.json", "{}"}, {"t_0.vtu", "0"}, {"t_1.vtu", "1"}, {"t_4.vtu", "4"}});
+  replaceOutputSet(dir, OutputKind::Thermal, {{"thermal.json", "{\"n\": 2}"}, {"t_0.vtu", "zero"}});
+  EXPECT_EQ(entries(dir), (std::vector<std::string>{kOutputManifest, "a.src", "joints.csv", "report.json",
+                                                    "t_0.vtu", "thermal.json", "trajectory.csv"}));
+  EXPECT_EQ(readFile(dir / "t_0.vtu"), "zero");
+  EXPECT_NO_THROW(verifyOutputSet(dir));
+  // A program exported later keeps the history.
+  replaceOutputSet(dir, OutputKind::Program, {{"a.src", "2"}});
+  EXPECT_TRUE(fs::exists(dir / "t_0.vtu"));
+
+  replaceOutputSet(dir, OutputKind::Plan,
+                   {{"trajectory.csv", "slower\n"},
+                    {"report.json", "{}"},
+                    {"thermal.json", "{}", true},
+                    {"t_0.vtu", "a", true},
+                    {"t_1.vtu", "b", true}});
+  EXPECT_EQ(entries(dir), (std::vector<std::string>{kOutputManifest, "report.json", "t_0.vtu", "t_1.vtu",
+                                                    "thermal.json", "trajectory.csv"}));
+  replaceOutputSet(dir, OutputKind::Thermal, {{"thermal.json", "{}"}});
+  EXPECT_EQ(entries(dir),
+            (std::vector<std::string>{kOutputManifest, "report.json", "thermal.json", "trajectory.csv"}));
+  EXPECT_NO_THROW(verifyOutputSet(dir));
+}
+
 // A file that cannot be written (a name longer than the file system allows) stops the set before
 // anything in the folder changes.
 TEST(OutputSet, AFailureLeavesThePreviousSetIntactAndNothingBeside)

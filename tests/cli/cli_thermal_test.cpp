@@ -4,6 +4,7 @@
 // bad input exits 3 with nothing written, and the time step the message proposes works.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <fstream>
 #include <regex>
 #include <sstream>
@@ -82,9 +83,27 @@ TEST_F(CliThermal, EnergyPointsProbesAndLinearity)
   EXPECT_EQ(j.at("substrate_z_mm"), 0.0);  // the sample stands on z = 0
   std::string header;
   const auto points = readCsv(out / "thermal_points.csv", &header);
-  EXPECT_EQ(header, "index,peak_C,interpass_C,below_at_arrival_C,time_above_melt_s");
+  EXPECT_EQ(header, "index,peak_C,interpass_C,time_above_melt_s,bond,risk,below_at_arrival_C,pool_mm");
   ASSERT_EQ(points.size(), path.size());
-  for (const auto& row : points) EXPECT_GT(row[1], 1500.0) << "point " << row[0] << " never melted";
+  // Eq. 5.31 with G3Si1's liquid density 7200 kg/m3 and surface tension 1.6 N/m, g = 9.81: Bo / L^2
+  // lies between the vertical wall's weight 1 and the horizontal surface's e^(pi/4), per mm^2.
+  const double perSquareMm = 7200.0 * 9.81 / 1.6 * 1e-6;
+  int risky = 0;
+  for (const auto& row : points) {
+    EXPECT_GT(row[1], 1500.0) << "point " << row[0] << " never melted";
+    const double pool = row[7], bond = row[4];
+    // The arc strikes on the first point: nothing has melted yet.
+    if (row[0] > 0) {
+      EXPECT_GT(pool, 0.0) << "point " << row[0];
+    }
+    EXPECT_GE(bond, perSquareMm * pool * pool * (1.0 - 1e-9)) << "point " << row[0];
+    EXPECT_LE(bond, perSquareMm * pool * pool * std::exp(M_PI / 4.0) * (1.0 + 1e-9)) << "point " << row[0];
+    const bool liquidBelow = row[2] > 1450.0 && path.points[size_t(row[0])].revolution > 0;  // solidus
+    EXPECT_EQ(row[5], (bond > j.at("bond_threshold").get<double>() || liquidBelow) ? 1.0 : 0.0)
+        << "point " << row[0];
+    risky += int(row[5]);
+  }
+  EXPECT_EQ(j.at("n_risk_points"), risky);
   const auto probes = readCsv(out / "probes.csv", &header);
   ASSERT_TRUE(std::regex_match(header, std::regex(R"(t,node_\d+_C,node_\d+_C)"))) << header;
   ASSERT_GT(probes.size(), 10u);
@@ -93,6 +112,22 @@ TEST_F(CliThermal, EnergyPointsProbesAndLinearity)
   double topPeak = 0.0;
   for (const auto& row : probes) topPeak = std::max(topPeak, row[2]);
   EXPECT_GT(topPeak, 1500.0);
+
+  // A synergic line's energy per mm of wire: the plan feeds a constant 2.3 m/min, so 1000 W is
+  // 1000 / (2300 / 60) J/mm, and the energy in is the same.
+  const fs::path perWire = tmp_ / "per_wire";
+  ASSERT_EQ(runCli({"thermal", plan().string(), "-o", perWire.string(), "--energy-per-wire",
+                    std::to_string(1000.0 / (2300.0 / 60.0))})
+                .exitCode,
+            0);
+  EXPECT_NEAR(thermal(perWire).at("energy_in_J").get<double>(), in, 1e-5 * in);
+
+  // Radiation only takes heat away.
+  const fs::path radiating = tmp_ / "radiating";
+  ASSERT_EQ(runCli({"thermal", plan().string(), "-o", radiating.string(), "--emissivity", "0.8"}).exitCode,
+            0);
+  EXPECT_LT(thermal(radiating).at("max_peak_C").get<double>(), j.at("max_peak_C").get<double>() - 100.0);
+  EXPECT_EQ(thermal(radiating).at("material").at("emissivity"), 0.8);
 
   const fs::path twice = tmp_ / "twice";
   ASSERT_EQ(runCli({"thermal", plan().string(), "-o", twice.string(), "--power", "2000"}).exitCode, 0);
@@ -126,6 +161,13 @@ TEST_F(CliThermal, BadInputExitsThreeWithNothingWritten)
   EXPECT_EQ(r.exitCode, 3) << r.err;
   r = runCli({"thermal", plan().string(), "-o", out.string(), "--voltage", "18"});
   EXPECT_EQ(r.exitCode, 2) << r.err;
+  r = runCli({"thermal", plan().string(), "-o", out.string(), "--energy-per-wire", "30", "--power", "900"});
+  EXPECT_EQ(r.exitCode, 2) << r.err;
+  r = runCli({"thermal", plan().string(), "-o", out.string(), "--energy-per-wire", "-1"});
+  EXPECT_EQ(r.exitCode, 3) << r.err;
+  r = runCli({"thermal", plan().string(), "-o", out.string(), "--emissivity", "1.5"});
+  EXPECT_EQ(r.exitCode, 3) << r.err;
+  EXPECT_NE(r.err.find("emissivity must be in [0, 1]"), std::string::npos) << r.err;
   r = runCli({"thermal", plan().string()});
   EXPECT_EQ(r.exitCode, 2) << r.err;
   // A step the torch outruns: refused, with the longest that resolves it, which then works.
@@ -137,6 +179,84 @@ TEST_F(CliThermal, BadInputExitsThreeWithNothingWritten)
   r = runCli({"thermal", plan().string(), "-o", out.string(), "--dt", m[1].str()});
   EXPECT_EQ(r.exitCode, 0) << r.err;
   EXPECT_TRUE(fs::exists(out / "thermal.json"));
+}
+
+// Re-planned to a limit the plain plan exceeds, the path written is the plan's with slower
+// speeds, and simulated again on its own (a plain run on the written folder) it meets the limit.
+TEST_F(CliThermal, ReplansToAnInterpassLimit)
+{
+  const fs::path plain = tmp_ / "plain", out = tmp_ / "replanned";
+  ASSERT_EQ(runCli({"thermal", plan().string(), "-o", plain.string(), "--frames", "0"}).exitCode, 0);
+  const double hottest = thermal(plain).at("max_interpass_C").get<double>();
+  const double limit = 20.0 + 0.8 * (hottest - 20.0);
+  const std::string limitText = std::to_string(limit);
+  CliRun r = runCli({"thermal", plan().string(), "-o", out.string(), "--interpass-max", limitText, "--remedy",
+                     "heat", "--frames", "3"});
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const nlohmann::json j = thermal(out);
+  EXPECT_EQ(j.at("replan").at("limit_met"), true);
+  EXPECT_EQ(j.at("replan").at("revolutions_added"), 0);
+  EXPECT_GT(j.at("replan").at("build_time_added_s").get<double>(), 0.0);
+  EXPECT_LE(j.at("max_interpass_C").get<double>(), limit);
+  const Trajectory before = readTrajectoryCsv(plan() / "trajectory.csv");
+  const Trajectory after = readTrajectoryCsv(out / "trajectory.csv");
+  ASSERT_EQ(after.size(), before.size());
+  for (size_t i = 0; i < after.size(); ++i) {
+    EXPECT_EQ(after.points[i].position, before.points[i].position);
+    EXPECT_LE(after.points[i].travelSpeed, before.points[i].travelSpeed);
+  }
+  const nlohmann::json report = nlohmann::json::parse(readBytes(out / "report.json"));
+  EXPECT_NEAR(report.at("build_time_s").get<double>(),
+              nlohmann::json::parse(readBytes(plan() / "report.json")).at("build_time_s").get<double>() +
+                  j.at("replan").at("build_time_added_s").get<double>(),
+              1e-6);
+  EXPECT_EQ(report.at("thermal_replan").at("limit_met"), true);
+  EXPECT_TRUE(fs::exists(out / "thermal.pvd"));
+  EXPECT_TRUE(fs::exists(out / "thermal_0003.vtu"));
+
+  // The plain run on the re-planned folder replaces only the thermal files.
+  r = runCli(
+      {"thermal", out.string(), "-o", out.string(), "--frames", "0", "--power", std::to_string(1000.0)});
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_TRUE(fs::exists(out / "trajectory.csv"));
+  EXPECT_FALSE(fs::exists(out / "thermal_0000.vtu"));
+  // A fixed power over the slowed revolutions puts more heat in than the wire-fed one: the
+  // re-planned path is judged at the power the re-planning assumed, the power per unit wire.
+  EXPECT_GT(thermal(out).at("max_interpass_C").get<double>(), 0.0);
+
+  // A limit nothing can reach: exit 4, the best path still written, with why.
+  const fs::path hopeless = tmp_ / "hopeless";
+  r = runCli({"thermal", plan().string(), "-o", hopeless.string(), "--interpass-max", "25", "--frames", "0"});
+  EXPECT_EQ(r.exitCode, 4) << r.err;
+  EXPECT_NE(r.err.find("the interpass limit cannot be met"), std::string::npos) << r.err;
+  EXPECT_EQ(thermal(hopeless).at("replan").at("limit_met"), false);
+  EXPECT_TRUE(fs::exists(hopeless / "trajectory.csv"));
+
+  EXPECT_EQ(runCli({"thermal", plan().string(), "-o", hopeless.string(), "--remedy", "heat"}).exitCode, 2);
+  r = runCli(
+      {"thermal", plan().string(), "-o", hopeless.string(), "--interpass-max", "300", "--remedy", "dwell"});
+  EXPECT_EQ(r.exitCode, 2) << r.err;
+  EXPECT_NE(r.err.find("--remedy dwell"), std::string::npos) << r.err;
+}
+
+// A part file is planned as 'plan' plans it (same flags, same path) and simulated; the plan is
+// written with its thermal history.
+TEST_F(CliThermal, PlansAPartFileFirst)
+{
+  const fs::path out = tmp_ / "part";
+  const std::string part = (sourceDir() / "resources/samples/open_cylinder.stl").string();
+  CliRun r = runCli({"thermal", part, "--points-per-rev", "90", "-o", out.string(), "--frames", "0"});
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.out.find("planned open_cylinder.stl: 4500 points, feasible"), std::string::npos) << r.out;
+  EXPECT_EQ(readBytes(out / "trajectory.csv"), readBytes(plan() / "trajectory.csv"));
+  EXPECT_EQ(nlohmann::json::parse(readBytes(out / "report.json")).at("n_points"), 4500);
+  const fs::path fromPlan = tmp_ / "from_plan";
+  ASSERT_EQ(runCli({"thermal", plan().string(), "-o", fromPlan.string(), "--frames", "0"}).exitCode, 0);
+  EXPECT_EQ(readBytes(out / "thermal_points.csv"), readBytes(fromPlan / "thermal_points.csv"));
+
+  r = runCli({"thermal", part, "--points-per-rev", "zero", "-o", out.string()});
+  EXPECT_EQ(r.exitCode, 2) << r.err;
+  EXPECT_NE(r.err.find("points_per_rev"), std::string::npos) << r.err;
 }
 
 }  // namespace

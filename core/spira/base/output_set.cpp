@@ -167,10 +167,17 @@ std::vector<Entry> entriesFor(const std::vector<OutputFile>& files, const std::s
   return out;
 }
 
+// The thermal files are listed with the programs, under a name no program file can have: like a
+// program they belong to the plan beside them.
+constexpr const char* kThermalSet = "/thermal";
+
 // What a new set writes: its kind, its file names and, for a program, the program's name.
 struct NewSet {
   NewSet(OutputKind k, const std::vector<OutputFile>& files)
-      : kind(k), program(k == OutputKind::Program ? programName(files) : std::string())
+      : kind(k),
+        program(k == OutputKind::Program   ? programName(files)
+                : k == OutputKind::Thermal ? kThermalSet
+                                           : std::string())
   {
     for (const OutputFile& f : files) names.insert(f.name);
   }
@@ -210,7 +217,14 @@ Manifest nextManifest(const Manifest& old, const NewSet& next, const std::vector
     if (next.keeps(e, true)) m.program.push_back(e);
   std::vector<Entry>& into = next.kind == OutputKind::Plan ? m.plan : m.program;
   const std::vector<Entry> added = entriesFor(files, next.program);
-  into.insert(into.end(), added.begin(), added.end());
+  for (size_t i = 0; i < files.size(); ++i) {
+    if (next.kind == OutputKind::Plan && files[i].thermal) {
+      m.program.push_back(added[i]);
+      m.program.back().program = kThermalSet;
+    } else {
+      into.push_back(added[i]);
+    }
+  }
   return m;
 }
 

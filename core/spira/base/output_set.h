@@ -10,10 +10,13 @@ namespace spira {
 struct OutputFile {
   std::string name;
   std::string bytes;
+  // In a plan set: a file of the plan's thermal history, which the next thermal set replaces.
+  bool thermal = false;
 };
 
-// A plan (trajectory.csv, joints.csv, report.json) or a robot program (its .src/.dat/.ls files).
-enum class OutputKind { Plan, Program };
+// A plan (trajectory.csv, joints.csv, report.json), a robot program (its .src/.dat/.ls files) or the
+// thermal history of the plan (thermal.json, its CSVs and its ParaView series).
+enum class OutputKind { Plan, Program, Thermal };
 
 // The hidden file in an output folder that lists the files of Spira's sets there, with their sizes
 // and checksums.
@@ -23,7 +26,8 @@ inline constexpr const char* kOutputManifest = ".spira-set.json";
 // the new one, never a mix, and a failure at any point leaves the old set as it was. A plan set
 // drops every file of the previous plan and its programs (a program belongs to the plan it was made
 // from); a program set (named by its first file's stem, the main program) drops the previous files
-// of that program and keeps the plan and other programs. Files that are not Spira's are kept.
+// of that program and keeps the plan and other programs; a thermal set replaces the previous thermal
+// files and keeps the plan and the programs. Files that are not Spira's are kept.
 //
 // The new folder content is staged in full in a hidden sibling folder (new files written and
 // synced, kept files hard-linked, the manifest last) and swapped with `dir` in one rename

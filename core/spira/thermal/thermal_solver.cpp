@@ -13,6 +13,7 @@
 
 #include "spira/base/error.h"
 #include "spira/base/number_text.h"
+#include "spira/thermal/thermal_source.h"
 
 namespace spira {
 namespace {
@@ -59,6 +60,9 @@ void validate(const ThermalMesh& mesh, const ThermalSettings& s)
   if (s.films.air < 0.0 || s.films.substrate < 0.0)
     throw InputError("film coefficients cannot be negative", "35 W/(m2 K) for air, 2000 for the substrate");
   if (s.coolingTime < 0.0 || s.timeStep < 0.0) throw InputError("times cannot be negative");
+  if (!(s.sourceRadius >= 0.0) || !std::isfinite(s.sourceRadius))
+    throw InputError("the arc's radius must be positive, or 0 for a point source",
+                     "half the bead width, e.g. 2.6 mm");
   if (s.timeStep > 0.0 && (s.power > 0.0 || s.powerPerWireFeed > 0.0)) {
     // The source must not cross more than one shell thickness in a step.
     double fastest = 0.0;
@@ -151,39 +155,52 @@ class PrefixSolver : public ThermalLinearSolver {
   std::vector<double> a_, inverseDiagonal_, r_, z_, p_, q_;
 };
 
-// The energy (J) the moving source puts into each node over [t0, t1]: along each heat segment the
-// load is split linearly between its two ends by the torch's position (Eq. 5.28, with the weights the
-// right way round), integrated over the time the torch spends on it, so no segment is skipped.
-class SourceLoad {
+// Radiation from both faces of the laid shell, sigma eps (T^4 - T_air^4) per m2, applied after each
+// step's conduction solve as an implicit Euler step of each node's own balance (a Lie splitting):
+// unconditionally stable at any peak, and the energy it removes is counted as lost.
+class Radiation {
  public:
-  SourceLoad(const ThermalMesh& mesh, double power, double perWireFeed)
-      : mesh_(mesh), power_(power), perWireFeed_(perWireFeed)
+  Radiation(const ThermalSettings& s, size_t nodes)
+      : emissivity_(s.material.emissivity), air_(s.films.airTemperature), area_(nodes, 0.0)
   {
   }
-
-  double add(double t0, double t1, std::vector<double>& energy)
+  bool on() const { return emissivity_ > 0.0; }
+  void born(const ThermalMesh& mesh, int element)
   {
-    const auto& h = mesh_.heatTime;
-    while (segment_ + 1 < h.size() && h[segment_ + 1] <= t0) ++segment_;
-    double total = 0.0;
-    for (size_t i = segment_; i + 1 < h.size() && h[i] < t1; ++i) {
-      const double ta = h[i], tb = h[i + 1];
-      const double power = perWireFeed_ > 0.0 ? perWireFeed_ * mesh_.heatWireFeed[i] : power_;
-      if (!mesh_.heatArcOn[i] || !(tb > ta) || power == 0.0) continue;
-      const double s0 = std::max(ta, t0), s1 = std::min(tb, t1);
-      if (!(s1 > s0)) continue;
-      const double towardB = ((s1 - ta) * (s1 - ta) - (s0 - ta) * (s0 - ta)) / (2.0 * (tb - ta));
-      energy[size_t(mesh_.heatNode[i])] += power * (s1 - s0 - towardB);
-      energy[size_t(mesh_.heatNode[i + 1])] += power * towardB;
-      total += power * (s1 - s0);
+    const auto& t = mesh.triangles[size_t(element)];
+    const Vec3 &a = mesh.nodes[size_t(t[0])], &b = mesh.nodes[size_t(t[1])], &c = mesh.nodes[size_t(t[2])];
+    const double faces = 2.0 * (b - a).cross(c - a).norm() / 2.0 * 1e-6 / 3.0;  // m2 per node
+    for (int v : t) area_[size_t(v)] += faces;
+  }
+  // Cools node temperatures `temp` over dt; returns the energy removed, J.
+  double apply(int window, double dt, const std::vector<double>& capacity, std::vector<double>& temp) const
+  {
+    constexpr double kSigma = 5.670374419e-8, kKelvin = 273.15;
+    const double ambient4 = std::pow(air_ + kKelvin, 4.0);
+    double lost = 0.0;
+    for (int i = 0; i < window; ++i) {
+      const double k = dt * kSigma * emissivity_ * area_[size_t(i)] / capacity[size_t(i)];
+      if (!(k > 0.0)) continue;
+      const double start = temp[size_t(i)] + kKelvin;
+      double x = start;
+      for (int it = 0; it < 30; ++it) {  // x - start + k (x^4 - a^4) = 0, increasing in x
+        const double f = x - start + k * (x * x * x * x - ambient4), df = 1.0 + 4.0 * k * x * x * x;
+        const double next = x - f / df;
+        if (std::abs(next - x) < 1e-10 * x) {
+          x = next;
+          break;
+        }
+        x = next;
+      }
+      lost += capacity[size_t(i)] * (start - x);
+      temp[size_t(i)] = x - kKelvin;
     }
-    return total;
+    return lost;
   }
 
  private:
-  const ThermalMesh& mesh_;
-  double power_, perWireFeed_;
-  size_t segment_ = 0;
+  double emissivity_, air_;
+  std::vector<double> area_;
 };
 
 }  // namespace
@@ -258,7 +275,8 @@ ThermalResult simulateThermal(const ThermalMesh& mesh, const ThermalSettings& se
 
   const std::unique_ptr<ThermalLinearSolver> solver =
       settings.linearSolver ? settings.linearSolver(system) : std::make_unique<PrefixSolver>(system);
-  SourceLoad source(mesh, settings.power, settings.powerPerWireFeed);
+  SourceLoad source(mesh, settings);
+  Radiation radiation(settings, mesh.nodeCount());
   size_t born = 0, reached = 0;
   int window = 0;
   double iterations = 0.0, windowSum = 0.0;
@@ -279,6 +297,7 @@ ThermalResult simulateThermal(const ThermalMesh& mesh, const ThermalSettings& se
                                             system.capacitySum[size_t(nodes[1])],
                                             system.capacitySum[size_t(nodes[2])]};
       system.activate(e);
+      if (radiation.on()) radiation.born(mesh, e);
       for (int a = 0; a < 3; ++a) {
         const size_t v = size_t(nodes[size_t(a)]);
         deposited[v] = 1;
@@ -290,7 +309,7 @@ ThermalResult simulateThermal(const ThermalMesh& mesh, const ThermalSettings& se
     if (window == 0) continue;
 
     std::fill(energy.begin(), energy.begin() + window, 0.0);
-    res.energy.in += source.add(ta, tb, energy);
+    res.energy.in += source.add(ta, tb, deposited, energy);
     // ([C] + theta dt [K]) T1 = ([C] - (1 - theta) dt [K]) T0 + dt F + source energy; nodes past the
     // window keep their temperature, their coupling moved to the right-hand side.
     for (int i = 0; i < window; ++i) {
@@ -316,9 +335,12 @@ ThermalResult simulateThermal(const ThermalMesh& mesh, const ThermalSettings& se
     res.solverSeconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - solve0).count();
     windowSum += window;
 
+    for (int i = 0; i < window; ++i)
+      res.energy.lost += dt * system.lossWeight[size_t(i)] *
+                         ((1.0 - theta) * previous[size_t(i)] + theta * temp[size_t(i)] - air);
+    if (radiation.on()) res.energy.lost += radiation.apply(window, dt, system.capacitySum, temp);
     for (int i = 0; i < window; ++i) {
       const double a = previous[size_t(i)], b = temp[size_t(i)];
-      res.energy.lost += dt * system.lossWeight[size_t(i)] * ((1.0 - theta) * a + theta * b - air);
       if (!deposited[size_t(i)]) continue;
       if (b >= res.nodePeak[size_t(i)]) {
         res.nodePeak[size_t(i)] = b;

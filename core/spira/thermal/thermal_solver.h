@@ -33,6 +33,9 @@ struct ThermalSettings {
   // J per mm of wire: when positive, the power follows the wire feed (a synergic line's energy per
   // unit wire, power = powerPerWireFeed x WFS) instead of `power`.
   double powerPerWireFeed = 0.0;
+  // mm: the radius of a Gaussian surface flux around the torch (thermal_source.h); 0 = the source's
+  // point load, whose peak temperatures and pool grow without bound as the mesh is refined.
+  double sourceRadius = 0.0;
   ThermalFilms films;
   double initialTemperature = 20.0;  // C, every node at t = 0
   ThermalScheme scheme = ThermalScheme::CrankNicolson;

@@ -1,0 +1,102 @@
+#include "spira/thermal/thermal_source.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace spira {
+
+SourceLoad::SourceLoad(const ThermalMesh& mesh, const ThermalSettings& settings)
+    : mesh_(mesh),
+      power_(settings.power),
+      perWireFeed_(settings.powerPerWireFeed),
+      radius_(settings.sourceRadius)
+{
+  if (!(radius_ > 0.0)) return;
+  const size_t n = mesh.nodeCount();
+  std::vector<std::vector<int>> adjacent(n);
+  area_.assign(n, 0.0);
+  for (const auto& t : mesh.triangles) {
+    const Vec3 &a = mesh.nodes[size_t(t[0])], &b = mesh.nodes[size_t(t[1])], &c = mesh.nodes[size_t(t[2])];
+    const double third = (b - a).cross(c - a).norm() / 6.0;
+    for (int k = 0; k < 3; ++k) {
+      area_[size_t(t[size_t(k)])] += third;
+      adjacent[size_t(t[size_t(k)])].push_back(t[size_t((k + 1) % 3)]);
+      adjacent[size_t(t[size_t(k)])].push_back(t[size_t((k + 2) % 3)]);
+    }
+  }
+  neighbourStart_.assign(n + 1, 0);
+  for (size_t v = 0; v < n; ++v) {
+    auto& a = adjacent[v];
+    std::sort(a.begin(), a.end());
+    a.erase(std::unique(a.begin(), a.end()), a.end());
+    neighbourStart_[v + 1] = neighbourStart_[v] + int(a.size());
+    neighbours_.insert(neighbours_.end(), a.begin(), a.end());
+  }
+  mark_.assign(n, 0);
+}
+
+void SourceLoad::spread(const Vec3& at, int near, double joules, const std::vector<char>& deposited,
+                        std::vector<double>& energy)
+{
+  const double reach2 = 2.25 * radius_ * radius_, scale = 3.0 / (radius_ * radius_);
+  ++stamp_;
+  stack_.assign(1, near);
+  mark_[size_t(near)] = stamp_;
+  found_.clear();
+  weight_.clear();
+  double sum = 0.0;
+  while (!stack_.empty()) {
+    const int u = stack_.back();
+    stack_.pop_back();
+    const double d2 = (mesh_.nodes[size_t(u)] - at).squaredNorm();
+    if (deposited[size_t(u)]) {
+      found_.push_back(u);
+      weight_.push_back(area_[size_t(u)] * std::exp(-scale * d2));
+      sum += weight_.back();
+    }
+    for (int q = neighbourStart_[size_t(u)]; q < neighbourStart_[size_t(u) + 1]; ++q) {
+      const int w = neighbours_[size_t(q)];
+      if (mark_[size_t(w)] == stamp_ || (mesh_.nodes[size_t(w)] - at).squaredNorm() > reach2) continue;
+      mark_[size_t(w)] = stamp_;
+      stack_.push_back(w);
+    }
+  }
+  if (!(sum > 0.0)) {  // nothing laid around the torch yet: its node takes it all
+    energy[size_t(near)] += joules;
+    return;
+  }
+  for (size_t k = 0; k < found_.size(); ++k) energy[size_t(found_[k])] += joules * weight_[k] / sum;
+}
+
+double SourceLoad::add(double t0, double t1, const std::vector<char>& deposited, std::vector<double>& energy)
+{
+  const auto& h = mesh_.heatTime;
+  while (segment_ + 1 < h.size() && h[segment_ + 1] <= t0) ++segment_;
+  double total = 0.0;
+  for (size_t i = segment_; i + 1 < h.size() && h[i] < t1; ++i) {
+    const double ta = h[i], tb = h[i + 1];
+    const double power = perWireFeed_ > 0.0 ? perWireFeed_ * mesh_.heatWireFeed[i] : power_;
+    if (!mesh_.heatArcOn[i] || !(tb > ta) || power == 0.0) continue;
+    const double s0 = std::max(ta, t0), s1 = std::min(tb, t1);
+    if (!(s1 > s0)) continue;
+    const int a = mesh_.heatNode[i], b = mesh_.heatNode[i + 1];
+    total += power * (s1 - s0);
+    if (!(radius_ > 0.0)) {
+      const double towardB = ((s1 - ta) * (s1 - ta) - (s0 - ta) * (s0 - ta)) / (2.0 * (tb - ta));
+      energy[size_t(a)] += power * (s1 - s0 - towardB);
+      energy[size_t(b)] += power * towardB;
+      continue;
+    }
+    // Samples no further apart than R / 2 along the part of the segment run in this step.
+    const Vec3 &pa = mesh_.nodes[size_t(a)], &pb = mesh_.nodes[size_t(b)];
+    const double run = (pb - pa).norm() * (s1 - s0) / (tb - ta);
+    const int samples = std::max(1, int(std::ceil(run / (0.5 * radius_))));
+    for (int k = 0; k < samples; ++k) {
+      const double f = (s0 + (k + 0.5) * (s1 - s0) / samples - ta) / (tb - ta);
+      spread(pa + f * (pb - pa), f < 0.5 ? a : b, power * (s1 - s0) / samples, deposited, energy);
+    }
+  }
+  return total;
+}
+
+}  // namespace spira

@@ -1,0 +1,124 @@
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "spira/base/error.h"
+#include "spira/thermal/thermal_replan.h"
+#include "thermal/thermal_cases.h"
+
+namespace spira {
+namespace {
+
+constexpr double kWireFeed = 2300.0 / 60.0;  // mm/s
+
+Trajectory fedDome()
+{
+  Trajectory t = test::hemisphereDome(30.0, 2.0, 120, 6.0);
+  for (TrajectoryPoint& p : t.points) p.wireFeed = kWireFeed;
+  return t;
+}
+
+ThermalStudySettings studySettings(const Trajectory& t)
+{
+  ThermalStudySettings s;
+  s.frames = 0;
+  s.solver.powerPerWireFeed = powerPerWireFeedOf(t, 1000.0);
+  return s;
+}
+
+double maxInterpass(const ThermalStudy& s, const Trajectory& t)
+{
+  double m = 0.0;
+  for (size_t i = 0; i < t.size(); ++i)
+    if (t.points[i].revolution > 0) m = std::max(m, s.result.interpass[i]);
+  return m;
+}
+
+TEST(ThermalReplan, PowerPerWireFeedGivesThePowerAtTheMedianFeed)
+{
+  const Trajectory t = fedDome();
+  EXPECT_DOUBLE_EQ(powerPerWireFeedOf(t, 1000.0), 1000.0 / kWireFeed);
+  NullProgress progress;
+  ThermalStudySettings fixed;
+  fixed.frames = 0;
+  const ThermalStudy a = runThermalStudy(t, fixed, progress),
+                     b = runThermalStudy(t, studySettings(t), progress);
+  EXPECT_NEAR(b.result.energy.in, a.result.energy.in, 1e-9 * a.result.energy.in);
+  EXPECT_NEAR(maxInterpass(b, t), maxInterpass(a, t), 1e-6);
+}
+
+// The dome overheats near its closure; slowed there, it stays under the limit when simulated again
+// on its own, with the same points, the same deposit (WFS / TS) and the same wire, so the same
+// energy in.
+TEST(ThermalReplan, SlowedDomeMeetsTheInterpassLimitWithTheSameDeposit)
+{
+  const Trajectory planned = fedDome();
+  const ThermalStudySettings settings = studySettings(planned);
+  NullProgress progress;
+  const ThermalStudy before = runThermalStudy(planned, settings, progress);
+  const double hottest = maxInterpass(before, planned);
+  ThermalReplanSettings replan;
+  replan.interpassMax = 20.0 + 0.7 * (hottest - 20.0);
+  const ThermalReplanOutcome out = replanForInterpass(planned, settings, replan, progress);
+  ASSERT_TRUE(out.limitMet) << out.why;
+  EXPECT_GE(out.rounds, 1);
+  EXPECT_EQ(out.revolutionsAdded, 0);
+  EXPECT_GT(out.revolutionsChanged, 0);
+  EXPECT_GT(out.buildTimeAdded, 0.0);
+
+  ASSERT_EQ(out.trajectory.size(), planned.size());
+  double slowest = 1.0;
+  for (size_t i = 0; i < planned.size(); ++i) {
+    const TrajectoryPoint &a = planned.points[i], &b = out.trajectory.points[i];
+    EXPECT_EQ(b.position, a.position);
+    EXPECT_EQ(b.height, a.height);
+    EXPECT_NEAR(b.wireFeed / b.travelSpeed, a.wireFeed / a.travelSpeed, 1e-12);
+    EXPECT_LE(b.travelSpeed, a.travelSpeed);
+    EXPECT_GE(b.wireFeed, replan.limits.wireFeedMin);
+    slowest = std::min(slowest, b.travelSpeed / a.travelSpeed);
+  }
+  EXPECT_DOUBLE_EQ(out.slowestFactor, slowest);
+  // The first revolutions are cool: they keep their speed.
+  EXPECT_EQ(out.trajectory.points[120].travelSpeed, planned.points[120].travelSpeed);
+
+  const ThermalStudy again = runThermalStudy(out.trajectory, settings, progress);
+  EXPECT_LE(maxInterpass(again, out.trajectory), replan.interpassMax);
+  EXPECT_NEAR(again.result.energy.in, before.result.energy.in, 1e-9 * before.result.energy.in);
+  EXPECT_NEAR(again.mesh.buildTime() - before.mesh.buildTime(), out.buildTimeAdded, 1e-9);
+  std::printf(
+      "dome R 30: interpass %.0f C -> %.0f C (limit %.0f C), %d revolutions slowed to %.0f %%, +%.0f s\n",
+      hottest, maxInterpass(again, out.trajectory), replan.interpassMax, out.revolutionsChanged,
+      100.0 * out.slowestFactor, out.buildTimeAdded);
+}
+
+TEST(ThermalReplan, StopsAtTheProcessLimitsAndSaysSo)
+{
+  const Trajectory planned = fedDome();
+  const ThermalStudySettings settings = studySettings(planned);
+  ThermalReplanSettings replan;
+  replan.interpassMax = 60.0;
+  replan.limits.wireFeedMin = kWireFeed;  // no slower wire feed allowed
+  NullProgress progress;
+  const ThermalReplanOutcome out = replanForInterpass(planned, settings, replan, progress);
+  EXPECT_FALSE(out.limitMet);
+  EXPECT_EQ(out.rounds, 0);
+  EXPECT_NE(out.why.find("slowest wire feed"), std::string::npos) << out.why;
+  EXPECT_EQ(out.trajectory, planned);
+}
+
+TEST(ThermalReplan, RefusesALimitAtAmbientAndAPowerNotFollowingTheFeed)
+{
+  const Trajectory planned = fedDome();
+  NullProgress progress;
+  ThermalReplanSettings replan;
+  replan.interpassMax = 20.0;
+  EXPECT_THROW(replanForInterpass(planned, studySettings(planned), replan, progress), InputError);
+  replan.interpassMax = 300.0;
+  ThermalStudySettings fixed;
+  EXPECT_THROW(replanForInterpass(planned, fixed, replan, progress), InputError);
+  EXPECT_THROW(powerPerWireFeedOf(test::hemisphereDome(30.0, 2.0, 120, 6.0), 1000.0), InputError);
+}
+
+}  // namespace
+}  // namespace spira
