@@ -39,3 +39,29 @@ endif()
 if(SPIRA_BUILD_TESTS)
   find_package(GTest REQUIRED)
 endif()
+
+# PETSc over MPI (Debian: libpetsc-real-dev, with OpenMPI) for the thermal model's distributed solves
+# (spira-cli thermal --backend petsc, mpirun). Optional: without it that backend is refused at run time.
+find_package(PkgConfig QUIET)
+if(PkgConfig_FOUND)
+  pkg_search_module(PETSC QUIET PETSc petsc)
+endif()
+find_package(MPI QUIET COMPONENTS C)
+set(spira_petsc_found OFF)
+if(PETSC_FOUND AND MPI_C_FOUND)
+  set(spira_petsc_found ON)
+endif()
+option(SPIRA_WITH_PETSC "Build the thermal model's PETSc (MPI) backend (needs libpetsc-real-dev)" ${spira_petsc_found})
+if(SPIRA_WITH_PETSC)
+  if(NOT spira_petsc_found)
+    message(FATAL_ERROR "SPIRA_WITH_PETSC needs PETSc and MPI: install libpetsc-real-dev, or configure with "
+                        "-DSPIRA_WITH_PETSC=OFF")
+  endif()
+  # Only the include directories and libraries: the .pc file's other flags are Debian's build flags.
+  add_library(Spira::petsc INTERFACE IMPORTED)
+  set_target_properties(Spira::petsc PROPERTIES INTERFACE_INCLUDE_DIRECTORIES "${PETSC_INCLUDE_DIRS}"
+    INTERFACE_LINK_LIBRARIES "${PETSC_LINK_LIBRARIES};MPI::MPI_C")
+  message(STATUS "Thermal PETSc backend: PETSc ${PETSC_VERSION}, MPI ${MPI_C_VERSION} (${MPIEXEC_EXECUTABLE})")
+else()
+  message(STATUS "Thermal PETSc backend: off (install libpetsc-real-dev for it)")
+endif()

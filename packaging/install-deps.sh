@@ -14,6 +14,7 @@ $SUDO apt-get install -y -qq --no-install-recommends \
   libcgal-dev libgmp-dev libmpfr-dev libboost-dev \
   libeigen3-dev libassimp-dev liburdfdom-dev liburdfdom-headers-dev libtinyxml-dev \
   libsuitesparse-dev libopenblas0-pthread libtbb-dev nlohmann-json3-dev \
+  libpetsc-real-dev openmpi-bin \
   libgtest-dev libgmock-dev \
   xvfb xauth libgl1-mesa-dri mesa-utils \
   >/dev/null

@@ -26,6 +26,7 @@
 #include "spira/thermal/thermal_replan.h"
 #include "spira/thermal/thermal_study.h"
 #include "spira/thermal/thermal_vtk.h"
+#include "thermal_backend.h"
 #include "thermal_outputs.h"
 
 namespace fs = std::filesystem;
@@ -129,7 +130,8 @@ constexpr const char* kHelp =
     "                         [--sub-segments K] [--divisions F] [--bead-width MM] [--substrate-z Z]\n"
     "                         [--source-radius R] [--emissivity E]\n"
     "                         [--scheme crank-nicolson|implicit-euler] [--cooling S] [--frames N]\n"
-    "                         [--interpass-max C [--remedy heat]] [--timing]\n\n"
+    "                         [--interpass-max C [--remedy heat]] [--timing]\n"
+    "                         [--backend eigen|petsc]\n\n"
     "Simulates the heat of the build along the planned path (docs/thermal.md): a shell of the deposit\n"
     "as thick as the bead, born where the torch lays it, heated by the moving arc,\n"
     "cooled by the air on both faces and by the substrate. Writes DIR/thermal.json (energy in, stored\n"
@@ -161,10 +163,12 @@ constexpr const char* kHelp =
     "  --remedy heat     how to re-plan: heat slows the wire feed and the travel speed together where\n"
     "                    the limit is exceeded (same deposit, same spiral, less power; down to the\n"
     "                    process's slowest speeds); the arc power then follows the wire feed\n"
+    "  --backend NAME    linear solves in this process (eigen, default) or on PETSc (petsc), also across\n"
+    "                    processes: mpirun -n N spira-cli thermal ... --backend petsc (rank 0 writes)\n"
     "Exit codes: 0 done, 2 usage, 3 bad input (unknown material, non-positive power, a time step too long\n"
-    "for the torch, a plan without process channels), 4 the interpass limit cannot be met (the best\n"
-    "re-planned path and its thermal files are still written, to inspect) or the planned PART is not\n"
-    "feasible.\n\n"
+    "for the torch, a plan without process channels, petsc or mpirun in a build without PETSc), 4 the\n"
+    "interpass limit cannot be met (the best re-planned path and its thermal files are still written, to\n"
+    "inspect) or the planned PART is not feasible.\n\n"
     "Plan flags, for a PART:\n"
     "  --strategy NAME    the decomposition (default isovalue); --no-mid-surface refuses a solid\n";
 
@@ -219,6 +223,7 @@ int cmdThermal(const std::vector<std::string>& argv)
     std::cout << kHelp << kPlacementHelp << paramFlagsHelp(flags.targets());
     return kExitOk;
   }
+  ThermalBackend backend(args);  // first, so that under mpirun only rank 0 reports what is wrong
   const bool timing = args.takeSwitch("--timing");
   const std::string outDir = args.takeOption("-o");
   ThermalStudySettings study;
@@ -304,6 +309,7 @@ int cmdThermal(const std::vector<std::string>& argv)
                                        : finiteNumberFlag("--substrate-z", substrateZ, "--substrate-z 0");
   settings.sourceRadius = radius.empty() ? 0.5 * mesh.thickness
                                          : finiteNumberFlag("--source-radius", radius, "--source-radius 2.6");
+  backend.start(settings);
 
   // Everything is computed before the first file is written.
   const auto start = std::chrono::steady_clock::now();
@@ -324,6 +330,7 @@ int cmdThermal(const std::vector<std::string>& argv)
     report["replan"] = replanJson(*outcome, replan, thermal);
     report["timings_s"]["replan"] = seconds;
   }
+  if (!backend.writes()) return kExitOk;  // under mpirun, rank 0 writes
   // A planned part or a re-planned path is written with its thermal history, as one plan set.
   const bool withPlan = partFlags || outcome;
   std::vector<OutputFile> files;

@@ -27,6 +27,12 @@ std::string drain(int fd)
 
 CliRun runCli(const std::vector<std::string>& args, const std::vector<std::string>& env)
 {
+  return runProgram(SPIRA_CLI, args, env);
+}
+
+CliRun runProgram(const std::string& program, const std::vector<std::string>& args,
+                  const std::vector<std::string>& env)
+{
   std::vector<std::string> environment;
   for (char** e = environ; *e; ++e) {
     const std::string entry = *e;
@@ -48,17 +54,17 @@ CliRun runCli(const std::vector<std::string>& args, const std::vector<std::strin
   posix_spawn_file_actions_adddup2(&actions, errPipe[1], 2);
   posix_spawn_file_actions_addclose(&actions, outPipe[0]);
   posix_spawn_file_actions_addclose(&actions, errPipe[0]);
-  std::vector<std::string> all = {SPIRA_CLI};
+  std::vector<std::string> all = {program};
   all.insert(all.end(), args.begin(), args.end());
   std::vector<char*> argv;
   for (auto& a : all) argv.push_back(a.data());
   argv.push_back(nullptr);
   pid_t pid = 0;
-  const int rc = posix_spawn(&pid, SPIRA_CLI, &actions, nullptr, argv.data(), envp.data());
+  const int rc = posix_spawn(&pid, program.c_str(), &actions, nullptr, argv.data(), envp.data());
   posix_spawn_file_actions_destroy(&actions);
   ::close(outPipe[1]);
   ::close(errPipe[1]);
-  if (rc != 0) throw std::runtime_error("cannot start spira-cli");
+  if (rc != 0) throw std::runtime_error("cannot start " + program);
   CliRun run;
   std::thread errReader([&] { run.err = drain(errPipe[0]); });
   run.out = drain(outPipe[0]);

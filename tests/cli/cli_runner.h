@@ -15,4 +15,8 @@ struct CliRun {
 // process's environment with the "NAME=VALUE" entries of `env` set on top.
 CliRun runCli(const std::vector<std::string>& args, const std::vector<std::string>& env = {});
 
+// The same for another program, given by its path (a launcher such as mpiexec running spira-cli).
+CliRun runProgram(const std::string& program, const std::vector<std::string>& args,
+                  const std::vector<std::string>& env = {});
+
 }  // namespace spira::test

@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <limits>
+#include <memory>
 #include <numeric>
 #include <string>
 
@@ -89,11 +90,12 @@ void validate(const ThermalMesh& mesh, const ThermalSettings& s)
 // Jacobi-preconditioned conjugate gradient on the leading `n` unknowns of A = C + theta dt K, warm
 // started from x. A direct factorisation would be redone at every step: element birth changes the
 // matrix each time the torch moves on (see docs/thermal.md for the measured comparison).
-class PrefixSolver {
+class PrefixSolver : public ThermalLinearSolver {
  public:
   explicit PrefixSolver(const ThermalSystem& s) : s_(s) {}
 
-  int solve(int n, double thetaDt, const std::vector<double>& b, std::vector<double>& x, double tolerance)
+  int solve(int n, double thetaDt, const std::vector<double>& b, std::vector<double>& x,
+            double tolerance) override
   {
     a_.resize(s_.column.size());
     inverseDiagonal_.resize(size_t(n));
@@ -276,7 +278,8 @@ ThermalResult simulateThermal(const ThermalMesh& mesh, const ThermalSettings& se
   for (int v : mesh.substrateNodes) onSubstrate[size_t(v)] = 1;
   size_t nextPoint = 0;
 
-  PrefixSolver solver(system);
+  const std::unique_ptr<ThermalLinearSolver> solver =
+      settings.linearSolver ? settings.linearSolver(system) : std::make_unique<PrefixSolver>(system);
   SourceLoad source(mesh, settings);
   Radiation radiation(settings, mesh.nodeCount());
   size_t born = 0, reached = 0;
@@ -333,7 +336,7 @@ ThermalResult simulateThermal(const ThermalMesh& mesh, const ThermalSettings& se
       previous[size_t(i)] = now;
     }
     const auto solve0 = std::chrono::steady_clock::now();
-    iterations += solver.solve(window, theta * dt, rhs, temp, settings.tolerance);
+    iterations += solver->solve(window, theta * dt, rhs, temp, settings.tolerance);
     res.solverSeconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - solve0).count();
     windowSum += window;
 

@@ -6,6 +6,7 @@
 
 #include "spira/base/progress.h"
 #include "spira/base/transform.h"
+#include "spira/thermal/thermal_linear_solver.h"
 #include "spira/thermal/thermal_material.h"
 #include "spira/thermal/thermal_mesh.h"
 #include "spira/thermal/thermal_system.h"
@@ -49,6 +50,9 @@ struct ThermalSettings {
   // Relative residual of the conjugate gradient: 1e-6 moved temperatures by < 0.01 C against 1e-10 on
   // twelve revolutions of the dome, in 23 iterations per step instead of 40.
   double tolerance = 1e-6;
+  // The backend of the linear solves: empty = the in-process conjugate gradient; PETSc over MPI with
+  // petscThermalSolver() (spira/thermal/petsc/thermal_petsc.h). Both meet `tolerance`.
+  ThermalSolverFactory linearSolver;
   std::vector<int> probeNodes;
   std::vector<Vec3> probePositions;                // mm; the nearest node is recorded
   std::function<void(const ThermalStep&)> onStep;  // after t = 0 and after every step
