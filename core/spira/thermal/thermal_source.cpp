@@ -35,13 +35,18 @@ SourceLoad::SourceLoad(const ThermalMesh& mesh, const ThermalSettings& settings)
   mark_.assign(n, 0);
 }
 
-void SourceLoad::spread(const Vec3& at, int near, double joules, const std::vector<char>& deposited,
+void SourceLoad::spread(const Vec3& at, int a, int b, double joules, const std::vector<char>& deposited,
                         std::vector<double>& energy)
 {
   const double reach2 = 2.25 * radius_ * radius_, scale = 3.0 / (radius_ * radius_);
   ++stamp_;
-  stack_.assign(1, near);
-  mark_[size_t(near)] = stamp_;
+  // Seeded from both ends of the torch's segment: on a segment longer than 3 R one end alone may not
+  // reach, through nodes within 1.5 R, every node the flux covers.
+  stack_.assign(1, a);
+  if (b != a) stack_.push_back(b);
+  mark_[size_t(a)] = mark_[size_t(b)] = stamp_;
+  const int near =
+      (mesh_.nodes[size_t(a)] - at).squaredNorm() <= (mesh_.nodes[size_t(b)] - at).squaredNorm() ? a : b;
   found_.clear();
   weight_.clear();
   double sum = 0.0;
@@ -93,7 +98,7 @@ double SourceLoad::add(double t0, double t1, const std::vector<char>& deposited,
     const int samples = std::max(1, int(std::ceil(run / (0.5 * radius_))));
     for (int k = 0; k < samples; ++k) {
       const double f = (s0 + (k + 0.5) * (s1 - s0) / samples - ta) / (tb - ta);
-      spread(pa + f * (pb - pa), f < 0.5 ? a : b, power * (s1 - s0) / samples, deposited, energy);
+      spread(pa + f * (pb - pa), a, b, power * (s1 - s0) / samples, deposited, energy);
     }
   }
   return total;

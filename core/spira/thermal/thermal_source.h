@@ -21,7 +21,8 @@ class SourceLoad {
   double add(double t0, double t1, const std::vector<char>& deposited, std::vector<double>& energy);
 
  private:
-  void spread(const Vec3& at, int near, double joules, const std::vector<char>& deposited,
+  // Spreads `joules` around `at`, on the segment from node a to node b.
+  void spread(const Vec3& at, int a, int b, double joules, const std::vector<char>& deposited,
               std::vector<double>& energy);
 
   const ThermalMesh& mesh_;
