@@ -25,6 +25,7 @@
 #include "spira/planning/trajectory_csv_reader.h"
 #include "spira/thermal/thermal_replan.h"
 #include "spira/thermal/thermal_study.h"
+#include "spira/thermal/thermal_substrate.h"
 #include "spira/thermal/thermal_vtk.h"
 #include "thermal_backend.h"
 #include "thermal_outputs.h"
@@ -67,18 +68,6 @@ ThermalSource readSource(const fs::path& input)
   s.limits = process.limits;
   s.report = mergedPlanReport(doc.results());
   return s;
-}
-
-// The plane the first revolution rests on: each of its points lies its deposit height above it,
-// along the point's build direction.
-double substratePlaneOf(const Trajectory& t)
-{
-  double z = std::numeric_limits<double>::infinity();
-  for (const TrajectoryPoint& p : t.points) {
-    if (p.revolution != t.points.front().revolution || p.path != t.points.front().path) break;
-    z = std::min(z, (p.position - p.height * p.build).z());
-  }
-  return z;
 }
 
 Vec3 probeFlag(const std::string& text)

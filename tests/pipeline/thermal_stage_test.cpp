@@ -15,6 +15,7 @@
 #include "spira/pipeline/planned_path.h"
 #include "spira/pipeline/thermal_stage.h"
 #include "spira/planning/plan_schemas.h"
+#include "spira/thermal/thermal_replan.h"
 
 namespace spira {
 namespace {
@@ -35,6 +36,7 @@ void enableThermal(Document& doc)
   doc.setParam(PlanSettings::kThermalSection, "enabled", true);
   doc.setParam(PlanSettings::kThermalSection, "frames", ParamValue(std::int64_t{40}));
   doc.setParam(PlanSettings::kThermalSection, "interpass_max", 300.0);
+  doc.setParam(PlanSettings::kThermalSection, "remedy_heat", false);  // drawn and counted only
 }
 
 bool sameBits(const std::vector<double>& a, const std::vector<double>& b)
@@ -108,6 +110,44 @@ TEST(ThermalStage, HoldsWhatADirectStudyOfTheProcessPathGives)
   EXPECT_EQ(plan.report["thermal"]["n_risk_points"], rep.riskPoints);
 }
 
+// With the remedy on, the stage re-plans the path to the limit: the robot and the program then
+// follow the slower path, which meets the limit when simulated again on its own.
+TEST(ThermalStage, ReplansToTheInterpassLimitAndTheMotionFollows)
+{
+  Document doc(smallWall());
+  enableThermal(doc);
+  NullProgress progress;
+  const DocumentPlan plain = planDocument(doc.state(), builtinRegistry(), progress);
+  ASSERT_TRUE(plain.results.reports.thermal);
+  const double hottest = plain.results.reports.thermal->maxInterpass;
+  const double limit = 20.0 + 0.8 * (hottest - 20.0);
+  doc.setParam(PlanSettings::kThermalSection, "interpass_max", limit);
+  doc.setParam(PlanSettings::kThermalSection, "remedy_heat", true);
+  const DocumentPlan plan = planDocument(doc.state(), builtinRegistry(), progress);
+  ASSERT_TRUE(plan.results.thermal && plan.results.reports.thermal);
+  const ThermalStageReport& rep = *plan.results.reports.thermal;
+  ASSERT_TRUE(rep.limitMet.has_value());
+  EXPECT_TRUE(*rep.limitMet);
+  EXPECT_EQ(rep.revolutionsAdded, 0);
+  EXPECT_GT(rep.buildTimeAdded.value_or(0.0), 0.0);
+  EXPECT_LE(rep.maxInterpass, limit);
+  ASSERT_TRUE(plan.results.thermal->replanned);
+  const Trajectory& slower = *plan.results.thermal->replanned;
+  ASSERT_EQ(slower.size(), plan.results.process->size());
+  EXPECT_EQ(*plannedPathOf(plan.results).trajectory, slower);
+
+  ThermalStageSettings settings = thermalStageSettingsFrom(doc.settings()->section("thermal"));
+  ThermalStudySettings study =
+      thermalStudySettingsFor(slower, settings, beadWidthOf(doc.settings()->section("process")));
+  study.solver.powerPerWireFeed = powerPerWireFeedOf(*plan.results.process, study.solver.power);
+  const ThermalStudy again = runThermalStudy(slower, study, progress);
+  double worst = 0.0;
+  for (size_t i = 0; i < slower.size(); ++i)
+    if (slower.points[i].revolution > 0) worst = std::max(worst, again.result.interpass[i]);
+  EXPECT_LE(worst, limit);
+  EXPECT_NEAR(again.result.energy.in, plain.results.reports.thermal->energyIn, 1e-9 * again.result.energy.in);
+}
+
 TEST(ThermalStage, CancelledWhileItRunsLeavesThePreviousResults)
 {
   Document doc(smallWall());
@@ -170,6 +210,16 @@ TEST(ThermalStage, BadSettingsAreNamed)
   values.set("voltage", 20.0);
   values.set("current", 150.0);
   EXPECT_DOUBLE_EQ(thermalStageSettingsFrom(values).study.solver.power, 0.8 * 20.0 * 150.0);
+  // The arc is half the bead wide unless set; radiation off unless an emissivity is given.
+  const Trajectory none;
+  EXPECT_DOUBLE_EQ(thermalStudySettingsFor(none, thermalStageSettingsFrom(values), 5.2).solver.sourceRadius,
+                   2.6);
+  EXPECT_EQ(thermalStageSettingsFrom(values).study.solver.material.emissivity, 0.0);
+  values.set("arc_radius", 3.0);
+  values.set("emissivity", 0.6);
+  EXPECT_DOUBLE_EQ(thermalStudySettingsFor(none, thermalStageSettingsFrom(values), 5.2).solver.sourceRadius,
+                   3.0);
+  EXPECT_DOUBLE_EQ(thermalStageSettingsFrom(values).study.solver.material.emissivity, 0.6);
   values.set("material", std::string("unobtainium"));
   EXPECT_THROW(thermalStageSettingsFrom(values), InputError);
   EXPECT_FALSE(thermalStageEnabled(ParamSet()));

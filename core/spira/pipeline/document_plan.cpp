@@ -151,7 +151,8 @@ DocumentPlan planDocument(const DocumentState& snapshot, const PluginRegistry& r
     const ThermalStageSettings thermal = thermalStageSettingsFrom(thermalValues);
     SubProgress thermalProgress(progress, kPlanShare, kThermalShare, "thermal");
     ThermalStageOutput heat = runThermalStage(
-        *r.process, thermal, beadWidthOf(settings.section(PlanSettings::kProcessSection)), thermalProgress);
+        *r.process, thermal, processSettingsFrom(settings.section(PlanSettings::kProcessSection)),
+        thermalProgress);
     r.setThermal(std::move(heat.result), std::move(heat.report));
   }
   const Trajectory& motionPath = r.thermal && r.thermal->replanned ? *r.thermal->replanned : *r.process;

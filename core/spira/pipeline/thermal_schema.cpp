@@ -15,6 +15,7 @@ namespace {
 struct StoredThermal : ThermalStageSettings {
   std::string material = "G3Si1";
   double power = 1000.0, voltage = 0.0, current = 0.0, efficiency = 0.8;
+  double emissivity = 0.0;
   double subSegments = 1.0, divisions = 1.0, frames = 200.0;
 };
 
@@ -70,6 +71,19 @@ const ThermalBinding& thermalBinding()
                            "Share of the arc's power that enters the part (GMAW/CMT: 80 to 85 %).", kArc)),
           &StoredThermal::efficiency),
       ThermalBinding::number(
+          numberParam("arc_radius", 0.0, 0.0, 20.0, "mm",
+                      text("Arc radius",
+                           "The arc as a Gaussian flux of this radius (95 % of the power inside it). "
+                           "0 = half the bead width.",
+                           kArc)),
+          &StoredThermal::arcRadius),
+      ThermalBinding::number(
+          numberParam(
+              "emissivity", 0.0, 0.0, 1.0, "",
+              text("Emissivity", "Radiation from both faces of the laid wall. 0 = none (the source's model).",
+                   kModel)),
+          [](StoredThermal& s) -> double& { return s.emissivity; }),
+      ThermalBinding::number(
           numberParam(
               "time_step", 0.0, 0.0, 60.0, "s",
               text("Time step", "0 = automatic: the torch moves one sub-segment per step.", kResolution)),
@@ -107,25 +121,14 @@ const ThermalBinding& thermalBinding()
                            "the probe chart and counted per point. 0 = no limit.",
                            kReplan)),
           &StoredThermal::interpassLimit),
-      ThermalBinding::flag(flagParam("remedy_deposit", true,
-                                     text("Thinner layers",
-                                          "Re-planning remedy: where the limit is exceeded, lay a thinner "
-                                          "deposit (more revolutions, faster travel "
-                                          "at the same wire feed).",
-                                          kReplan)),
-                           &StoredThermal::remedyDeposit),
       ThermalBinding::flag(
-          flagParam("remedy_heat", false,
-                    text("Less heat", "Re-planning remedy: lower the heat input within the process limits.",
+          flagParam("remedy_heat", true,
+                    text("Re-plan: less heat",
+                         "Where the interpass limit is exceeded, slow the wire feed and the travel speed "
+                         "together (same deposit, same single spiral, less arc power), down to the process's "
+                         "slowest speeds, and simulate again until the limit holds.",
                          kReplan)),
           &StoredThermal::remedyHeat),
-      ThermalBinding::flag(flagParam("remedy_dwell", false,
-                                     text("Dwell",
-                                          "Re-planning remedy: wait with the arc stable and the torch lifted "
-                                          "before the revolutions that "
-                                          "need it.",
-                                          kReplan)),
-                           &StoredThermal::remedyDwell),
   });
   return binding;
 }
@@ -157,6 +160,7 @@ ThermalStageSettings thermalStageSettingsFrom(const ParamSet& values)
   ThermalStageSettings out = stored;
   ThermalSettings& solver = out.study.solver;
   solver.material = thermalMaterialPreset(stored.material);
+  solver.material.emissivity = stored.emissivity;
   if (stored.power > 0.0)
     solver.power = stored.power;
   else if (stored.voltage > 0.0 && stored.current > 0.0)

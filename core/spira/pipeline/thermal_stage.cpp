@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "spira/base/progress.h"
+#include "spira/thermal/thermal_replan.h"
 #include "spira/thermal/thermal_substrate.h"
 
 namespace spira {
@@ -21,6 +22,7 @@ ThermalStudySettings thermalStudySettingsFor(const Trajectory& path, const Therm
 {
   ThermalStudySettings s = settings.study;
   s.mesh.thickness = beadWidth;
+  s.solver.sourceRadius = settings.arcRadius > 0.0 ? settings.arcRadius : 0.5 * beadWidth;
   s.mesh.substrateZ = path.empty() ? 0.0 : substratePlaneOf(path);
   return s;
 }
@@ -79,14 +81,30 @@ ThermalStageReport thermalStageReportOf(const ThermalStudy& study, const Thermal
 }
 
 ThermalStageOutput runThermalStage(const Trajectory& path, const ThermalStageSettings& settings,
-                                   double beadWidth, Progress& progress)
+                                   const ProcessSettings& process, Progress& progress)
 {
-  const ThermalStudySettings study = thermalStudySettingsFor(path, settings, beadWidth);
-  const ThermalStudy s = runThermalStudy(path, study, progress);
+  ThermalStudySettings study = thermalStudySettingsFor(path, settings, process.beadWidth);
   ThermalStageOutput out;
-  out.result = std::make_shared<const ThermalStageResult>(thermalStageResultOf(s));
-  out.report =
-      std::make_shared<const ThermalStageReport>(thermalStageReportOf(s, study, settings.interpassLimit));
+  if (!(settings.interpassLimit > 0.0) || !settings.remedyHeat) {
+    const ThermalStudy s = runThermalStudy(path, study, progress);
+    out.result = std::make_shared<const ThermalStageResult>(thermalStageResultOf(s));
+    out.report =
+        std::make_shared<const ThermalStageReport>(thermalStageReportOf(s, study, settings.interpassLimit));
+    return out;
+  }
+  study.solver.powerPerWireFeed = powerPerWireFeedOf(path, study.solver.power);
+  ThermalReplanSettings replan;
+  replan.interpassMax = settings.interpassLimit;
+  replan.limits = process.limits;
+  const ThermalReplanOutcome o = replanForInterpass(path, study, replan, progress);
+  ThermalStageResult result = thermalStageResultOf(o.study);
+  if (o.rounds > 0) result.replanned = std::make_shared<const Trajectory>(o.trajectory);
+  ThermalStageReport report = thermalStageReportOf(o.study, study, settings.interpassLimit);
+  report.limitMet = o.limitMet;
+  report.revolutionsAdded = o.revolutionsAdded;
+  report.buildTimeAdded = o.buildTimeAdded;
+  out.result = std::make_shared<const ThermalStageResult>(std::move(result));
+  out.report = std::make_shared<const ThermalStageReport>(std::move(report));
   return out;
 }
 
