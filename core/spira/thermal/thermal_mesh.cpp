@@ -353,4 +353,25 @@ ThermalMesh buildThermalMesh(const Trajectory& trajectory, const ThermalMeshSett
   return mesh;
 }
 
+NodeAdjacency nodeAdjacency(const ThermalMesh& mesh)
+{
+  const size_t n = mesh.nodeCount();
+  std::vector<std::vector<int>> adjacent(n);
+  for (const auto& t : mesh.triangles)
+    for (int a = 0; a < 3; ++a) {
+      adjacent[size_t(t[size_t(a)])].push_back(t[size_t((a + 1) % 3)]);
+      adjacent[size_t(t[size_t(a)])].push_back(t[size_t((a + 2) % 3)]);
+    }
+  NodeAdjacency out;
+  out.start.assign(n + 1, 0);
+  for (size_t v = 0; v < n; ++v) {
+    auto& a = adjacent[v];
+    std::sort(a.begin(), a.end());
+    a.erase(std::unique(a.begin(), a.end()), a.end());
+    out.start[v + 1] = out.start[v] + int(a.size());
+    out.neighbours.insert(out.neighbours.end(), a.begin(), a.end());
+  }
+  return out;
+}
+
 }  // namespace spira

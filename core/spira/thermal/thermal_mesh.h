@@ -46,6 +46,13 @@ struct ThermalMesh {
   int nearestNode(const Vec3& p) const;
 };
 
+// Each node's neighbours along the shell's edges: those of node v are
+// neighbours[start[v] .. start[v + 1]), sorted.
+struct NodeAdjacency {
+  std::vector<int> start, neighbours;
+};
+NodeAdjacency nodeAdjacency(const ThermalMesh& mesh);
+
 // Builds the shell: each revolution joined to the one before it (to the substrate plane for the
 // first), k sub-segments along the path, f rows across, two triangles per quad where revolutions
 // match point for point, and a zipper (fan at a closure point) where they do not.

@@ -11,20 +11,9 @@ MeltPoolTracker::MeltPoolTracker(const ThermalMesh& mesh, const Trajectory& traj
     : mesh_(mesh), trajectory_(trajectory), melt_(meltingTemperature)
 {
   const size_t n = mesh.nodeCount();
-  std::vector<std::vector<int>> adjacent(n);
-  for (const auto& t : mesh.triangles)
-    for (int a = 0; a < 3; ++a) {
-      adjacent[size_t(t[size_t(a)])].push_back(t[size_t((a + 1) % 3)]);
-      adjacent[size_t(t[size_t(a)])].push_back(t[size_t((a + 2) % 3)]);
-    }
-  neighbourStart_.assign(n + 1, 0);
-  for (size_t v = 0; v < n; ++v) {
-    auto& a = adjacent[v];
-    std::sort(a.begin(), a.end());
-    a.erase(std::unique(a.begin(), a.end()), a.end());
-    neighbourStart_[v + 1] = neighbourStart_[v] + int(a.size());
-    neighbours_.insert(neighbours_.end(), a.begin(), a.end());
-  }
+  NodeAdjacency adjacency = nodeAdjacency(mesh);
+  neighbourStart_ = std::move(adjacency.start);
+  neighbours_ = std::move(adjacency.neighbours);
   heatPoint_.assign(mesh.heatNode.size(), 0);
   for (size_t p = 0; p < mesh.pointHeatIndex.size(); ++p) {
     const size_t from = size_t(mesh.pointHeatIndex[p]);

@@ -13,25 +13,15 @@ SourceLoad::SourceLoad(const ThermalMesh& mesh, const ThermalSettings& settings)
 {
   if (!(radius_ > 0.0)) return;
   const size_t n = mesh.nodeCount();
-  std::vector<std::vector<int>> adjacent(n);
   area_.assign(n, 0.0);
   for (const auto& t : mesh.triangles) {
     const Vec3 &a = mesh.nodes[size_t(t[0])], &b = mesh.nodes[size_t(t[1])], &c = mesh.nodes[size_t(t[2])];
     const double third = (b - a).cross(c - a).norm() / 6.0;
-    for (int k = 0; k < 3; ++k) {
-      area_[size_t(t[size_t(k)])] += third;
-      adjacent[size_t(t[size_t(k)])].push_back(t[size_t((k + 1) % 3)]);
-      adjacent[size_t(t[size_t(k)])].push_back(t[size_t((k + 2) % 3)]);
-    }
+    for (int v : t) area_[size_t(v)] += third;
   }
-  neighbourStart_.assign(n + 1, 0);
-  for (size_t v = 0; v < n; ++v) {
-    auto& a = adjacent[v];
-    std::sort(a.begin(), a.end());
-    a.erase(std::unique(a.begin(), a.end()), a.end());
-    neighbourStart_[v + 1] = neighbourStart_[v] + int(a.size());
-    neighbours_.insert(neighbours_.end(), a.begin(), a.end());
-  }
+  NodeAdjacency adjacency = nodeAdjacency(mesh);
+  neighbourStart_ = std::move(adjacency.start);
+  neighbours_ = std::move(adjacency.neighbours);
   mark_.assign(n, 0);
 }
 
