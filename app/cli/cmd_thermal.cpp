@@ -1,4 +1,5 @@
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <filesystem>
 #include <iostream>
@@ -115,7 +116,7 @@ double arcPowerFrom(Args& args, bool perWire)
 constexpr const char* kHelp =
     "usage: spira-cli thermal PLAN_DIR|PROJECT.spira|PART [plan flags] -o DIR [--material NAME]\n"
     "                         [--power W | --voltage V --current A [--efficiency E] |\n"
-    "                         --energy-per-wire J] [--dt auto|S] [--probe X,Y,Z]...\n"
+    "                         --energy-per-wire J | --power-table F] [--dt auto|S] [--probe X,Y,Z]...\n"
     "                         [--sub-segments K] [--divisions F] [--bead-width MM] [--substrate-z Z]\n"
     "                         [--source-radius R] [--emissivity E]\n"
     "                         [--scheme crank-nicolson|implicit-euler] [--cooling S] [--frames N]\n"
@@ -137,7 +138,9 @@ constexpr const char* kHelp =
     "  --power W         arc power reaching the part (default 1000 W, the source's base case), or\n"
     "  --voltage V --current A [--efficiency E]   its product (E default 0.8), or\n"
     "  --energy-per-wire J   the arc's energy per mm of wire fed (a synergic line): the power follows\n"
-    "                    the wire feed point by point\n"
+    "                    the wire feed point by point, or\n"
+    "  --power-table F   a measured calibration, a CSV of wfs_m_min,power_W rows (header first):\n"
+    "                    the power interpolated at each point's wire feed\n"
     "  --dt auto|S       time step; auto (default) moves the torch one sub-segment per step\n"
     "  --sub-segments K  mesh sub-segments per planned segment (default 1); --divisions F across a layer\n"
     "  --bead-width MM   shell thickness (default: the project's bead width, else 5.2 mm)\n"
@@ -162,6 +165,40 @@ constexpr const char* kHelp =
     "  --strategy NAME    the decomposition (default isovalue); --no-mid-surface refuses a solid\n";
 
 }  // namespace
+
+// --power-table FILE: a CSV of wfs_m_min,power_W rows (a header line first), the arc's calibration.
+std::vector<std::array<double, 2>> readPowerTable(const fs::path& file)
+{
+  if (!fs::is_regular_file(file))
+    throw InputError("the power table '" + file.string() + "' does not exist",
+                     "give a CSV file of wfs_m_min,power_W rows");
+  std::istringstream in(readFile(file));
+  std::string line;
+  std::getline(in, line);  // header
+  std::vector<std::array<double, 2>> table;
+  for (int number = 2; std::getline(in, line); ++number) {
+    if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
+    std::istringstream row(line);
+    std::string wfs, power;
+    std::getline(row, wfs, ',');
+    std::getline(row, power);
+    char* end1 = nullptr;
+    char* end2 = nullptr;
+    const double w = std::strtod(wfs.c_str(), &end1), p = std::strtod(power.c_str(), &end2);
+    if (wfs.empty() || power.empty() || end1 == wfs.c_str() || end2 == power.c_str() ||
+        std::string(end2).find_first_not_of(" \t\r") != std::string::npos)
+      throw InputError(
+          "line " + std::to_string(number) + " of '" + file.string() + "' is not two numbers: '" + line + "'",
+          "each line after the header: wire feed in m/min, arc power in W, e.g. 2.3,1000");
+    table.push_back({w * 1000.0 / 60.0, p});
+  }
+  try {
+    validatePowerTable(table);
+  } catch (const InputError& e) {
+    throw InputError("'" + file.string() + "': " + e.what(), e.hint());
+  }
+  return table;
+}
 
 // Whether the command names a part file: no plan folder and no project among its arguments (the
 // flags' values are numbers and names, never folders).
@@ -224,9 +261,12 @@ int cmdThermal(const std::vector<std::string>& argv)
     settings.material.emissivity = finiteNumberFlag("--emissivity", e, "--emissivity 0.8");
     validateThermalMaterial(settings.material);
   }
-  const std::string perWire = args.takeOption("--energy-per-wire");
-  settings.power = arcPowerFrom(args, !perWire.empty());
+  const std::string perWire = args.takeOption("--energy-per-wire"), table = args.takeOption("--power-table");
+  if (!perWire.empty() && !table.empty())
+    throw UsageError("--energy-per-wire and --power-table both give the arc power", "give one of them");
+  settings.power = arcPowerFrom(args, !perWire.empty() || !table.empty());
   if (!perWire.empty()) settings.powerPerWireFeed = positiveValue("--energy-per-wire", perWire, "J/mm");
+  if (!table.empty()) settings.powerTable = readPowerTable(table);
   if (const std::string dt = args.takeOption("--dt"); !dt.empty() && dt != "auto")
     settings.timeStep = positiveValue("--dt", dt, "s");
   for (std::string p = args.takeOption("--probe"); !p.empty(); p = args.takeOption("--probe"))

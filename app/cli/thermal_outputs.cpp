@@ -68,6 +68,7 @@ nlohmann::json thermalJson(const ThermalStudy& study, const ThermalStudySettings
         {"source", s.material.source}}},
       {"power_W", s.power},
       {"power_per_wire_feed_J_mm", s.powerPerWireFeed},
+      {"power_table_rows", s.powerTable.size()},
       {"source_radius_mm", s.sourceRadius},
       {"scheme", s.scheme == ThermalScheme::CrankNicolson ? "crank_nicolson" : "implicit_euler"},
       {"time_step_s", s.timeStep > 0.0 ? nlohmann::json(s.timeStep) : nlohmann::json("auto")},

@@ -122,6 +122,26 @@ TEST_F(CliThermal, EnergyPointsProbesAndLinearity)
             0);
   EXPECT_NEAR(thermal(perWire).at("energy_in_J").get<double>(), in, 1e-5 * in);
 
+  // A calibration table flat at 1000 W is the default's power; a row out of order is refused by line.
+  writeBytes(tmp_ / "flat.csv", "wfs_m_min,power_W\n1.0,1000\n12.0,1000\n");
+  const fs::path tabled = tmp_ / "tabled";
+  ASSERT_EQ(runCli({"thermal", plan().string(), "-o", tabled.string(), "--power-table",
+                    (tmp_ / "flat.csv").string()})
+                .exitCode,
+            0);
+  EXPECT_NEAR(thermal(tabled).at("energy_in_J").get<double>(), in, 1e-9 * in);
+  writeBytes(tmp_ / "unsorted.csv", "wfs_m_min,power_W\n3.0,1200\n2.0,900\n");
+  CliRun bad = runCli(
+      {"thermal", plan().string(), "-o", tabled.string(), "--power-table", (tmp_ / "unsorted.csv").string()});
+  EXPECT_EQ(bad.exitCode, 3) << bad.err;
+  EXPECT_NE(bad.err.find("row 2 of the power table does not feed more wire than row 1"), std::string::npos)
+      << bad.err;
+  writeBytes(tmp_ / "text.csv", "wfs_m_min,power_W\n2.3,lots\n");
+  bad = runCli(
+      {"thermal", plan().string(), "-o", tabled.string(), "--power-table", (tmp_ / "text.csv").string()});
+  EXPECT_EQ(bad.exitCode, 3) << bad.err;
+  EXPECT_NE(bad.err.find("line 2 of"), std::string::npos) << bad.err;
+
   // Radiation only takes heat away.
   const fs::path radiating = tmp_ / "radiating";
   ASSERT_EQ(runCli({"thermal", plan().string(), "-o", radiating.string(), "--emissivity", "0.8"}).exitCode,

@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "spira/base/error.h"
@@ -45,6 +46,33 @@ TEST(ThermalReplan, PowerPerWireFeedGivesThePowerAtTheMedianFeed)
   const ThermalStudy a = runThermalStudy(t, fixed, progress),
                      b = runThermalStudy(t, studySettings(t), progress);
   EXPECT_NEAR(b.result.energy.in, a.result.energy.in, 1e-9 * a.result.energy.in);
+  EXPECT_NEAR(maxInterpass(b, t), maxInterpass(a, t), 1e-6);
+}
+
+// A calibration table through the origin is a constant energy per wire; a flat one a constant
+// power; between rows the power is interpolated, held beyond the ends.
+TEST(ThermalReplan, PowerTableInterpolatesTheCalibration)
+{
+  const std::vector<std::array<double, 2>> table{{10.0, 300.0}, {30.0, 900.0}, {50.0, 1700.0}};
+  EXPECT_DOUBLE_EQ(tablePower(table, 20.0), 600.0);
+  EXPECT_DOUBLE_EQ(tablePower(table, 40.0), 1300.0);
+  EXPECT_DOUBLE_EQ(tablePower(table, 5.0), 300.0);
+  EXPECT_DOUBLE_EQ(tablePower(table, 80.0), 1700.0);
+  EXPECT_THROW(validatePowerTable({{10.0, 300.0}}), InputError);
+  EXPECT_THROW(validatePowerTable({{10.0, 300.0}, {10.0, 400.0}}), InputError);
+  EXPECT_THROW(validatePowerTable({{10.0, 300.0}, {20.0, -1.0}}), InputError);
+
+  const Trajectory t = fedDome();
+  NullProgress progress;
+  ThermalStudySettings perWire = studySettings(t), flat, linear;
+  perWire.frames = flat.frames = linear.frames = 0;
+  linear.solver.powerTable = {{1.0, 1000.0 / kWireFeed}, {100.0, 100.0 * 1000.0 / kWireFeed}};
+  flat.solver.powerTable = {{1.0, 1000.0}, {100.0, 1000.0}};
+  flat.solver.power = 1.0;  // the table wins
+  const ThermalStudy a = runThermalStudy(t, perWire, progress), b = runThermalStudy(t, linear, progress),
+                     c = runThermalStudy(t, flat, progress);
+  EXPECT_NEAR(b.result.energy.in, a.result.energy.in, 1e-9 * a.result.energy.in);
+  EXPECT_NEAR(c.result.energy.in, a.result.energy.in, 1e-9 * a.result.energy.in);
   EXPECT_NEAR(maxInterpass(b, t), maxInterpass(a, t), 1e-6);
 }
 

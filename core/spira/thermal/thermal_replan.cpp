@@ -47,7 +47,7 @@ ThermalReplanOutcome replanForInterpass(const Trajectory& planned, const Thermal
     throw InputError("an interpass limit of " + significantText(limit, 6) + " C is not above the initial " +
                          significantText(ambient, 6) + " C",
                      "give a limit such as 250 C (G3Si1's suggested interpass temperature)");
-  if (!(settings.solver.powerPerWireFeed > 0.0))
+  if (!(settings.solver.powerPerWireFeed > 0.0) && settings.solver.powerTable.empty())
     throw InputError("re-planning needs the arc power to follow the wire feed",
                      "set the power per unit wire feed (powerPerWireFeedOf)");
 

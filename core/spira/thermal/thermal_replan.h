@@ -36,8 +36,9 @@ struct ThermalReplanOutcome {
 double powerPerWireFeedOf(const Trajectory& trajectory, double power);
 
 // Re-plans `planned` (with its process channels) until its interpass temperature stays at or under
-// the limit or the process limits stop it. `settings.solver.powerPerWireFeed` must be set (see
-// powerPerWireFeedOf). Throws InputError for a limit at or below the initial temperature.
+// the limit or the process limits stop it. The power must follow the wire feed:
+// `settings.solver.powerPerWireFeed` (see powerPerWireFeedOf) or a power table. Throws InputError for a limit
+// at or below the initial temperature.
 ThermalReplanOutcome replanForInterpass(const Trajectory& planned, const ThermalStudySettings& settings,
                                         const ThermalReplanSettings& replan, Progress& progress);
 

@@ -63,7 +63,8 @@ void validate(const ThermalMesh& mesh, const ThermalSettings& s)
   if (!(s.sourceRadius >= 0.0) || !std::isfinite(s.sourceRadius))
     throw InputError("the arc's radius must be positive, or 0 for a point source",
                      "half the bead width, e.g. 2.6 mm");
-  if (s.timeStep > 0.0 && (s.power > 0.0 || s.powerPerWireFeed > 0.0)) {
+  if (!s.powerTable.empty()) validatePowerTable(s.powerTable);
+  if (s.timeStep > 0.0 && (s.power > 0.0 || s.powerPerWireFeed > 0.0 || !s.powerTable.empty())) {
     // The source must not cross more than one shell thickness in a step; under Crank-Nicolson not
     // more than half: at 0.8 of it the hot spot rang to -256 C where the arc struck again over a
     // cold layer of the test wall (implicit Euler did not; neither did 0.4 or the automatic step).
@@ -209,6 +210,35 @@ class Radiation {
 };
 
 }  // namespace
+
+double tablePower(const std::vector<std::array<double, 2>>& table, double wireFeed)
+{
+  if (wireFeed <= table.front()[0]) return table.front()[1];
+  if (wireFeed >= table.back()[0]) return table.back()[1];
+  const auto above = std::upper_bound(table.begin(), table.end(), wireFeed,
+                                      [](double w, const std::array<double, 2>& row) { return w < row[0]; });
+  const auto& b = *above;
+  const auto& a = *(above - 1);
+  return a[1] + (wireFeed - a[0]) / (b[0] - a[0]) * (b[1] - a[1]);
+}
+
+void validatePowerTable(const std::vector<std::array<double, 2>>& table)
+{
+  if (table.size() < 2)
+    throw InputError("the power table has " + std::to_string(table.size()) + " row(s)",
+                     "give at least two rows of wire feed and power");
+  for (size_t i = 0; i < table.size(); ++i) {
+    const auto& r = table[i];
+    if (!std::isfinite(r[0]) || !std::isfinite(r[1]) || !(r[0] > 0.0) || !(r[1] > 0.0))
+      throw InputError(
+          "row " + std::to_string(i + 1) + " of the power table is not a positive wire feed and power",
+          "each row: wire feed (m/min) and arc power (W), both positive");
+    if (i > 0 && !(r[0] > table[i - 1][0]))
+      throw InputError("row " + std::to_string(i + 1) +
+                           " of the power table does not feed more wire than row " + std::to_string(i),
+                       "sort the rows by increasing wire feed, without repeats");
+  }
+}
 
 ThermalResult simulateThermal(const ThermalMesh& mesh, const ThermalSettings& settings, Progress& progress)
 {

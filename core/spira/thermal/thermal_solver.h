@@ -1,5 +1,6 @@
 #pragma once
 
+#include <array>
 #include <functional>
 #include <utility>
 #include <vector>
@@ -33,6 +34,9 @@ struct ThermalSettings {
   // J per mm of wire: when positive, the power follows the wire feed (a synergic line's energy per
   // unit wire, power = powerPerWireFeed x WFS) instead of `power`.
   double powerPerWireFeed = 0.0;
+  // A measured calibration of the arc: (wire feed mm/s, power W) rows in increasing wire feed; when
+  // given, each segment's power is interpolated at its wire feed (held at the ends) instead.
+  std::vector<std::array<double, 2>> powerTable;
   // mm: the radius of a Gaussian surface flux around the torch (thermal_source.h); 0 = the source's
   // point load, whose peak temperatures and pool grow without bound as the mesh is refined.
   double sourceRadius = 0.0;
@@ -57,6 +61,12 @@ struct ThermalSettings {
   std::vector<Vec3> probePositions;                // mm; the nearest node is recorded
   std::function<void(const ThermalStep&)> onStep;  // after t = 0 and after every step
 };
+
+// The power of `table` (ThermalSettings::powerTable) at wire feed `wireFeed` (mm/s), W.
+double tablePower(const std::vector<std::array<double, 2>>& table, double wireFeed);
+// Throws InputError naming the first row (1-based) that is not finite, not positive, or not above
+// the previous row's wire feed, or a table of fewer than two rows.
+void validatePowerTable(const std::vector<std::array<double, 2>>& table);
 
 // The arc power reaching the part, efficiency x U x I, in W. InputError for a non-positive voltage
 // or current or an efficiency outside (0, 1].

@@ -9,7 +9,8 @@ SourceLoad::SourceLoad(const ThermalMesh& mesh, const ThermalSettings& settings)
     : mesh_(mesh),
       power_(settings.power),
       perWireFeed_(settings.powerPerWireFeed),
-      radius_(settings.sourceRadius)
+      radius_(settings.sourceRadius),
+      table_(settings.powerTable)
 {
   if (!(radius_ > 0.0)) return;
   const size_t n = mesh.nodeCount();
@@ -70,7 +71,9 @@ double SourceLoad::add(double t0, double t1, const std::vector<char>& deposited,
   double total = 0.0;
   for (size_t i = segment_; i + 1 < h.size() && h[i] < t1; ++i) {
     const double ta = h[i], tb = h[i + 1];
-    const double power = perWireFeed_ > 0.0 ? perWireFeed_ * mesh_.heatWireFeed[i] : power_;
+    const double power = !table_.empty()      ? tablePower(table_, mesh_.heatWireFeed[i])
+                         : perWireFeed_ > 0.0 ? perWireFeed_ * mesh_.heatWireFeed[i]
+                                              : power_;
     if (!mesh_.heatArcOn[i] || !(tb > ta) || power == 0.0) continue;
     const double s0 = std::max(ta, t0), s1 = std::min(tb, t1);
     if (!(s1 > s0)) continue;

@@ -27,6 +27,7 @@ class SourceLoad {
 
   const ThermalMesh& mesh_;
   double power_, perWireFeed_, radius_;
+  std::vector<std::array<double, 2>> table_;
   size_t segment_ = 0;
   std::vector<int> neighbourStart_, neighbours_;
   std::vector<double> area_;  // each node's third of its triangles' areas, mm2
