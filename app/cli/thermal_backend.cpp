@@ -69,9 +69,10 @@ ThermalBackend::ThermalBackend(Args& args)
 
 void ThermalBackend::silence()
 {
-  static NullBuffer nothing;
-  std::cout.rdbuf(&nothing);
-  std::cerr.rdbuf(&nothing);
+  // Never destroyed: the standard streams are flushed after function statics are gone.
+  static NullBuffer* const nothing = new NullBuffer;
+  std::cout.rdbuf(nothing);
+  std::cerr.rdbuf(nothing);
 }
 
 void ThermalBackend::start(ThermalSettings& settings)
