@@ -3,17 +3,9 @@
 #include <algorithm>
 
 #include "spira/base/number_text.h"
+#include "spira/pipeline/thermal_stage.h"
 
 namespace spira::cli {
-namespace {
-
-double maxOf(const std::vector<double>& v)
-{
-  return v.empty() ? 0.0 : *std::max_element(v.begin(), v.end());
-}
-
-}  // namespace
-
 std::string thermalPointsCsv(const ThermalStudy& study)
 {
   const ThermalResult& r = study.result;
@@ -53,6 +45,8 @@ std::string thermalProbesCsv(const ThermalResult& r)
 nlohmann::json thermalJson(const ThermalStudy& study, const ThermalStudySettings& settings)
 {
   const ThermalResult& r = study.result;
+  // The extremes as the plan's thermal stage reports them.
+  const ThermalStageReport summary = thermalStageReportOf(study, settings, 0.0);
   const ThermalSettings& s = settings.solver;
   const ThermalMeshSettings& m = settings.mesh;
   size_t aboveMeltAtInterpass = 0;
@@ -82,11 +76,11 @@ nlohmann::json thermalJson(const ThermalStudy& study, const ThermalStudySettings
       {"energy_stored_J", r.energy.stored},
       {"energy_lost_J", r.energy.lost},
       {"energy_imbalance_J", r.energy.imbalance()},
-      {"max_peak_C", maxOf(r.peak)},
-      {"max_interpass_C", maxOf(r.interpass)},
+      {"max_peak_C", summary.maxPeak},
+      {"max_interpass_C", summary.maxInterpass},
       {"n_points_molten_below_at_interpass", aboveMeltAtInterpass},
-      {"max_pool_length_mm", maxOf(study.poolLength)},
-      {"max_bond", maxOf(study.bond)},
+      {"max_pool_length_mm", summary.maxPoolLength},
+      {"max_bond", summary.maxBond},
       {"bond_threshold", settings.bondThreshold},
       {"n_risk_points", study.riskPoints},
       {"n_nodes", r.nodes},
@@ -101,15 +95,16 @@ nlohmann::json thermalJson(const ThermalStudy& study, const ThermalStudySettings
 nlohmann::json replanJson(const ThermalReplanOutcome& o, const ThermalReplanSettings& replan,
                           const ThermalStudy& final)
 {
-  nlohmann::json j = {{"interpass_max_C", replan.interpassMax},
-                      {"remedy", "heat"},
-                      {"limit_met", o.limitMet},
-                      {"revolutions_added", o.revolutionsAdded},
-                      {"revolutions_slowed", o.revolutionsChanged},
-                      {"slowest_speed_factor", o.slowestFactor},
-                      {"build_time_added_s", o.buildTimeAdded},
-                      {"re_simulations", o.rounds},
-                      {"final_max_interpass_C", maxOf(final.result.interpass)}};
+  nlohmann::json j = {
+      {"interpass_max_C", replan.interpassMax},
+      {"remedy", "heat"},
+      {"limit_met", o.limitMet},
+      {"revolutions_added", o.revolutionsAdded},
+      {"revolutions_slowed", o.revolutionsChanged},
+      {"slowest_speed_factor", o.slowestFactor},
+      {"build_time_added_s", o.buildTimeAdded},
+      {"re_simulations", o.rounds},
+      {"final_max_interpass_C", thermalStageReportOf(final, ThermalStudySettings{}, 0.0).maxInterpass}};
   if (!o.why.empty()) j["why_not_met"] = o.why;
   return j;
 }
