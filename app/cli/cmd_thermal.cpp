@@ -20,6 +20,8 @@
 #include "spira/document/document.h"
 #include "spira/document/plan_report.h"
 #include "spira/document/project_file.h"
+#include "spira/document/stage_report_codec.h"
+#include "spira/pipeline/plan_records.h"
 #include "spira/pipeline/planned_path.h"
 #include "spira/planning/plan_files.h"
 #include "spira/planning/plan_schemas.h"
@@ -28,6 +30,7 @@
 #include "spira/thermal/thermal_study.h"
 #include "spira/thermal/thermal_substrate.h"
 #include "spira/thermal/thermal_vtk.h"
+#include "spira/verify/deposit_check.h"
 #include "thermal_backend.h"
 #include "thermal_outputs.h"
 
@@ -120,7 +123,8 @@ constexpr const char* kHelp =
     "                         [--sub-segments K] [--divisions F] [--bead-width MM] [--substrate-z Z]\n"
     "                         [--source-radius R] [--emissivity E]\n"
     "                         [--scheme crank-nicolson|implicit-euler] [--cooling S] [--frames N]\n"
-    "                         [--interpass-max C [--remedy heat]] [--timing]\n"
+    "                         [--interpass-max C [--remedy deposit|heat|dwell[,...]] [--max-dwell S]]\n"
+    "                         [--timing]\n"
     "                         [--backend eigen|petsc]\n\n"
     "Simulates the heat of the build along the planned path (docs/thermal.md): a shell of the deposit\n"
     "as thick as the bead, born where the torch lays it, heated by the moving arc,\n"
@@ -152,9 +156,15 @@ constexpr const char* kHelp =
     "                    the source's model)\n"
     "  --frames N        frames of the field in the ParaView series (default 50; 0: none)\n"
     "  --interpass-max C the highest interpass temperature allowed, C\n"
-    "  --remedy heat     how to re-plan: heat slows the wire feed and the travel speed together where\n"
-    "                    the limit is exceeded (same deposit, same spiral, less power; down to the\n"
-    "                    process's slowest speeds); the arc power then follows the wire feed\n"
+    "  --remedy LIST     how to re-plan, one or more of (default heat), applied in this order:\n"
+    "                    deposit: the overheating band laid with more, thinner revolutions at the same\n"
+    "                    wire feed (so faster), no thinner than the plan's h_min; one spiral still\n"
+    "                    heat: the wire feed and the travel speed slowed together there (same deposit,\n"
+    "                    same spiral, less power; down to the process's slowest speeds)\n"
+    "                    dwell: the torch stops before each revolution above the limit, lifts away with\n"
+    "                    the arc off and waits; each dwell adds an arc start\n"
+    "                    the arc power follows the wire feed when re-planning\n"
+    "  --max-dwell S     the longest single dwell (default 600 s)\n"
     "  --backend NAME    linear solves in this process (eigen, default) or on PETSc (petsc), also across\n"
     "                    processes: mpirun -n N spira-cli thermal ... --backend petsc (rank 0 writes)\n"
     "Exit codes: 0 done, 2 usage, 3 bad input (unknown material, non-positive power, a time step too long\n"
@@ -215,15 +225,42 @@ bool isPartInput(const std::vector<std::string>& rest)
   return false;
 }
 
-// --remedy: the remedies this version re-plans with.
-void checkRemedies(const std::string& text)
+// --remedy: a comma-separated list of the remedies to re-plan with, each at most once.
+void takeRemedies(const std::string& text, ThermalReplanSettings& replan)
 {
+  replan.heat = false;
   std::stringstream in(text);
   std::string item;
-  while (std::getline(in, item, ','))
-    if (item != "heat")
-      throw UsageError("--remedy " + item + " is not a remedy this version applies",
-                       "write --remedy heat (the deposit and dwell remedies are not available yet)");
+  while (std::getline(in, item, ',')) {
+    bool* chosen = item == "deposit" ? &replan.deposit
+                   : item == "heat"  ? &replan.heat
+                   : item == "dwell" ? &replan.dwell
+                                     : nullptr;
+    if (!chosen)
+      throw UsageError("--remedy " + item + " is not a remedy",
+                       "write one or more of deposit, heat and dwell, e.g. --remedy deposit,heat");
+    if (*chosen) throw UsageError("--remedy names " + item + " twice", "name each remedy once");
+    *chosen = true;
+  }
+  if (!replan.deposit && !replan.heat && !replan.dwell)
+    throw UsageError("--remedy names no remedy", "write --remedy heat, or deposit,heat,dwell");
+}
+
+// The deposit check of a path the deposit remedy thinned, judged on its own as a plan is: the plan's
+// window, the shell's bead width, the substrate plane.
+DepositCheckReport checkThinned(const ThermalReplanOutcome& outcome, const nlohmann::json& report,
+                                const ThermalMeshSettings& mesh)
+{
+  DepositCheckSettings s;
+  s.substrateZ = mesh.substrateZ;
+  s.beadWidth = mesh.thickness;
+  if (report.is_object()) {
+    s.hMin = report.value("h_min", s.hMin);
+    s.hMax = report.value("h_max", s.hMax);
+    s.tolerance = report.value("height_tolerance_mm", s.tolerance);
+  }
+  NullProgress progress;
+  return checkDeposits(outcome.trajectory, nullptr, s, progress);
 }
 
 void printStudy(const ThermalStudy& thermal, const ThermalSettings& settings, const nlohmann::json& report)
@@ -293,10 +330,15 @@ int cmdThermal(const std::vector<std::string>& argv)
   ThermalReplanSettings replan;
   if (const std::string limit = args.takeOption("--interpass-max"); !limit.empty())
     replan.interpassMax = finiteNumberFlag("--interpass-max", limit, "--interpass-max 250");
-  const std::string remedy = args.takeOption("--remedy");
-  if (!remedy.empty() && replan.interpassMax == 0.0)
-    throw UsageError("--remedy needs --interpass-max", "write --interpass-max 250 --remedy heat");
-  checkRemedies(remedy);
+  const std::string remedy = args.takeOption("--remedy"), maxDwell = args.takeOption("--max-dwell");
+  if ((!remedy.empty() || !maxDwell.empty()) && replan.interpassMax == 0.0)
+    throw UsageError(std::string(remedy.empty() ? "--max-dwell" : "--remedy") + " needs --interpass-max",
+                     "write --interpass-max 250 --remedy heat");
+  if (!remedy.empty()) takeRemedies(remedy, replan);
+  if (!maxDwell.empty()) {
+    if (!replan.dwell) throw UsageError("--max-dwell needs the dwell remedy", "write --remedy dwell");
+    replan.maxDwell = positiveValue("--max-dwell", maxDwell, "s");
+  }
   // A part file is planned first, with the flags of 'plan'; a plan folder or a project is read.
   const PluginRegistry& registry = builtinRegistry();
   std::optional<PartPlanFlags> partFlags;
@@ -343,13 +385,16 @@ int cmdThermal(const std::vector<std::string>& argv)
   // Everything is computed before the first file is written.
   const auto start = std::chrono::steady_clock::now();
   std::optional<ThermalReplanOutcome> outcome;
+  std::optional<DepositCheckReport> thinnedCheck;
   ThermalStudy thermal;
   if (replan.interpassMax > 0.0) {
     replan.limits = source.limits;
+    replan.hMin = source.report.is_object() ? source.report.value("h_min", 0.0) : 0.0;
     if (!(settings.powerPerWireFeed > 0.0))
       settings.powerPerWireFeed = powerPerWireFeedOf(source.trajectory, settings.power);
     outcome = replanForInterpass(source.trajectory, study, replan, progress);
     thermal = std::move(outcome->study);
+    if (outcome->revolutionsAdded > 0) thinnedCheck = checkThinned(*outcome, source.report, mesh);
   } else {
     thermal = runThermalStudy(source.trajectory, study, progress);
   }
@@ -365,8 +410,13 @@ int cmdThermal(const std::vector<std::string>& argv)
   std::vector<OutputFile> files;
   if (withPlan) {
     files.push_back({"trajectory.csv", trajectoryCsv(outcome ? outcome->trajectory : source.trajectory)});
-    const nlohmann::json planReport =
+    nlohmann::json planReport =
         outcome ? replannedReport(source.report, *outcome, replan, thermal) : source.report;
+    if (thinnedCheck) {
+      planReport["deposit_check"] = reportToJson(depositCheckRecord(*thinnedCheck));
+      planReport["feasible"] = planReport.value("feasible", true) && thinnedCheck->feasible;
+      planFeasible = planFeasible && thinnedCheck->feasible;
+    }
     files.push_back({"report.json", planReport.dump(2) + "\n"});
   }
   files.push_back({"thermal.json", report.dump(2) + "\n", withPlan});
@@ -379,12 +429,10 @@ int cmdThermal(const std::vector<std::string>& argv)
   replaceOutputSet(outDir, withPlan ? OutputKind::Plan : OutputKind::Thermal, files);
 
   printStudy(thermal, settings, report);
-  if (outcome)
-    std::cout << "re-planned for an interpass limit of " << significantText(replan.interpassMax, 4)
-              << " C: " << outcome->revolutionsChanged << " revolution(s) slowed (down to "
-              << significantText(100.0 * outcome->slowestFactor, 3) << " % speed), build time +"
-              << significantText(outcome->buildTimeAdded, 4) << " s, " << outcome->rounds
-              << " re-simulation(s) in " << significantText(seconds, 3) << " s\n";
+  if (outcome) printReplan(*outcome, replan, seconds);
+  if (thinnedCheck)
+    std::cout << "deposit check of the thinned path: "
+              << (thinnedCheck->feasible ? "feasible" : "INFEASIBLE: " + thinnedCheck->summary()) << "\n";
   if (timing)
     for (const auto& [stage, t] : report["timings_s"].items())
       std::cout << "timing " << stage << ": " << t.get<double>() << " s\n";
@@ -394,7 +442,7 @@ int cmdThermal(const std::vector<std::string>& argv)
     std::cerr << "error: the interpass limit cannot be met: " << outcome->why << "\n"
               << "hint: raise --interpass-max (the best reached is "
               << significantText(report["max_interpass_C"].get<double>(), 4)
-              << " C), or lower the power or the process's slowest speeds\n";
+              << " C), add remedies (--remedy deposit,heat,dwell), allow longer dwells, or lower the power\n";
     return kExitInfeasible;
   }
   return planFeasible ? kExitOk : kExitInfeasible;

@@ -1,6 +1,7 @@
 #include "thermal_outputs.h"
 
 #include <algorithm>
+#include <iostream>
 
 #include "spira/base/number_text.h"
 #include "spira/pipeline/thermal_stage.h"
@@ -97,16 +98,41 @@ nlohmann::json replanJson(const ThermalReplanOutcome& o, const ThermalReplanSett
 {
   nlohmann::json j = {
       {"interpass_max_C", replan.interpassMax},
-      {"remedy", "heat"},
+      {"remedy", remediesText(replan)},
+      {"applied", o.applied},
       {"limit_met", o.limitMet},
       {"revolutions_added", o.revolutionsAdded},
+      {"thinnest_deposit_ratio", o.thinnestRatio},
       {"revolutions_slowed", o.revolutionsChanged},
       {"slowest_speed_factor", o.slowestFactor},
+      {"dwells", o.dwells},
+      {"dwell_time_s", o.dwellTime},
+      {"arc_starts_added", o.dwells},
       {"build_time_added_s", o.buildTimeAdded},
       {"re_simulations", o.rounds},
       {"final_max_interpass_C", thermalStageReportOf(final, ThermalStudySettings{}, 0.0).maxInterpass}};
   if (!o.why.empty()) j["why_not_met"] = o.why;
   return j;
+}
+
+void printReplan(const ThermalReplanOutcome& o, const ThermalReplanSettings& replan, double seconds)
+{
+  std::cout << "re-planned for an interpass limit of " << significantText(replan.interpassMax, 4) << " C ("
+            << remediesText(replan) << "):";
+  if (o.applied.empty()) std::cout << " no change;";
+  for (const std::string& remedy : o.applied) {
+    if (remedy == "deposit")
+      std::cout << " " << o.revolutionsAdded << " revolution(s) added (deposit down to "
+                << significantText(100.0 * o.thinnestRatio, 3) << " %);";
+    else if (remedy == "heat")
+      std::cout << " " << o.revolutionsChanged << " revolution(s) slowed (down to "
+                << significantText(100.0 * o.slowestFactor, 3) << " % speed);";
+    else if (remedy == "dwell")
+      std::cout << " " << o.dwells << " dwell(s), " << significantText(o.dwellTime, 4) << " s in all, "
+                << o.dwells << " arc start(s) added;";
+  }
+  std::cout << " build time +" << significantText(o.buildTimeAdded, 4) << " s, " << o.rounds
+            << " re-simulation(s) in " << significantText(seconds, 3) << " s\n";
 }
 
 nlohmann::json replannedReport(nlohmann::json report, const ThermalReplanOutcome& o,
@@ -119,6 +145,10 @@ nlohmann::json replannedReport(nlohmann::json report, const ThermalReplanOutcome
     wfsMin = std::min(wfsMin, p.wireFeed);
     wfsMax = std::max(wfsMax, p.wireFeed);
   }
+  if (report.contains("n_points")) report["n_points"] = o.trajectory.size();
+  if (report.contains("n_revolutions"))
+    report["n_revolutions"] = report["n_revolutions"].get<long long>() + o.revolutionsAdded;
+  if (report.contains("path_length")) report["path_length"] = o.trajectory.length();
   if (report.contains("build_time_s"))
     report["build_time_s"] = report["build_time_s"].get<double>() + o.buildTimeAdded;
   if (report.contains("process") && report["process"].is_object()) {

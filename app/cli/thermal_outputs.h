@@ -20,6 +20,8 @@ nlohmann::json thermalJson(const ThermalStudy& study, const ThermalStudySettings
 // `final` is the re-planned path's study (the outcome's, moved out of it).
 nlohmann::json replanJson(const ThermalReplanOutcome& outcome, const ThermalReplanSettings& replan,
                           const ThermalStudy& final);
+// The console's account of a re-planning: what each remedy changed and what it cost.
+void printReplan(const ThermalReplanOutcome& outcome, const ThermalReplanSettings& replan, double seconds);
 // The plan's report.json updated for the re-planned path: build time, speed ranges, "thermal_replan".
 nlohmann::json replannedReport(nlohmann::json report, const ThermalReplanOutcome& outcome,
                                const ThermalReplanSettings& replan, const ThermalStudy& final);

@@ -253,10 +253,18 @@ TEST_F(CliThermal, ReplansToAnInterpassLimit)
   EXPECT_TRUE(fs::exists(hopeless / "trajectory.csv"));
 
   EXPECT_EQ(runCli({"thermal", plan().string(), "-o", hopeless.string(), "--remedy", "heat"}).exitCode, 2);
-  r = runCli(
-      {"thermal", plan().string(), "-o", hopeless.string(), "--interpass-max", "300", "--remedy", "dwell"});
-  EXPECT_EQ(r.exitCode, 2) << r.err;
-  EXPECT_NE(r.err.find("--remedy dwell"), std::string::npos) << r.err;
+  for (const std::vector<std::string>& bad : {std::vector<std::string>{"--remedy", "cool"},
+                                              {"--remedy", "heat,heat"},
+                                              {"--remedy", ","},
+                                              {"--remedy", "heat", "--max-dwell", "60"},
+                                              {"--remedy", "dwell", "--max-dwell", "0"}}) {
+    std::vector<std::string> args{"thermal",         plan().string(),   "-o",
+                                  hopeless.string(), "--interpass-max", "300"};
+    args.insert(args.end(), bad.begin(), bad.end());
+    r = runCli(args);
+    EXPECT_EQ(r.exitCode, bad.back() == "0" ? 3 : 2) << bad[1] << ": " << r.err;
+    EXPECT_NE(r.err.find(bad.size() == 2 ? "--remedy " : "--max-dwell "), std::string::npos) << r.err;
+  }
 }
 
 // A part file is planned as 'plan' plans it (same flags, same path) and simulated; the plan is

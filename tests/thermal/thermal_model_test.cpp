@@ -6,6 +6,7 @@
 
 #include "spira/base/error.h"
 #include "spira/base/progress.h"
+#include "spira/path/dwell.h"
 #include "spira/thermal/thermal_solver.h"
 #include "thermal/thermal_cases.h"
 
@@ -49,6 +50,38 @@ TEST(ThermalModel, NodeWaitsAtAmbientJumpsAboveMeltingAndValleysRise)
   std::printf("\n");
   // The first revolution sits on the substrate, still at ambient before the torch.
   EXPECT_NEAR(r.interpass[60], 20.0, 1.0);
+}
+
+// A dwell at the end of revolution 2: everything after it happens 60 s later, no heat goes in
+// during the wait, the energy still balances, and the revolution laid after it finds the wall
+// below cooler than without the wait.
+TEST(ThermalModel, ADwellDelaysTheRestWithoutHeatAndCoolsTheWallBelow)
+{
+  const Trajectory plain = test::cylinderWall(30.0, 6, 120, 2.0, 6.0);
+  Trajectory waiting = plain;
+  const size_t at = 3 * 120 - 1;  // the last point of revolution 2
+  waiting.extra[kDwellChannel].assign(plain.size(), 0.0);
+  waiting.extra[kDwellChannel][at] = 60.0;
+  const ThermalMesh a = buildThermalMesh(plain, {}), b = buildThermalMesh(waiting, {});
+  ASSERT_EQ(a.nodeCount(), b.nodeCount());
+  ASSERT_EQ(b.heatTime.size(), a.heatTime.size() + 1);
+  for (size_t i = 0; i < plain.size(); ++i) {
+    const double ta = a.heatTime[size_t(a.pointHeatIndex[i])], tb = b.heatTime[size_t(b.pointHeatIndex[i])];
+    EXPECT_NEAR(tb, i <= at ? ta : ta + 60.0, 1e-9) << "point " << i;
+  }
+  EXPECT_FALSE(b.heatArcOn[size_t(b.pointHeatIndex[at])]);
+  EXPECT_NEAR(b.buildTime(), a.buildTime() + 60.0, 1e-9);
+
+  ThermalSettings s;
+  NullProgress progress;
+  const ThermalResult ra = simulateThermal(a, s, progress), rb = simulateThermal(b, s, progress);
+  EXPECT_NEAR(rb.energy.in, ra.energy.in, 1e-9 * ra.energy.in);
+  EXPECT_LT(std::abs(rb.energy.imbalance()), 1e-3 * rb.energy.in);
+  for (size_t i = 0; i <= at; ++i) ASSERT_NEAR(rb.interpass[i], ra.interpass[i], 1e-6) << "point " << i;
+  const size_t over = at + 61;  // revolution 3, half-way round
+  std::printf("interpass half-way round revolution 3: %.0f C without the dwell, %.0f C after 60 s\n",
+              ra.interpass[over], rb.interpass[over]);
+  EXPECT_LT(rb.interpass[over], ra.interpass[over] - 50.0);
 }
 
 // Faster travel: lower peaks at the same power, higher valleys (more frequent passes) (Fig. 5.16).

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "spira/base/error.h"
+#include "spira/path/dwell.h"
 #include "spira/thermal/thermal_replan.h"
 #include "thermal/thermal_cases.h"
 
@@ -118,6 +119,86 @@ TEST(ThermalReplan, SlowedDomeMeetsTheInterpassLimitWithTheSameDeposit)
       "dome R 30: interpass %.0f C -> %.0f C (limit %.0f C), %d revolutions slowed to %.0f %%, +%.0f s\n",
       hottest, maxInterpass(again, out.trajectory), replan.interpassMax, out.revolutionsChanged,
       100.0 * out.slowestFactor, out.buildTimeAdded);
+}
+
+// Dwells before the hot revolutions near the closure: the same points, speeds and wire, so the same
+// energy in; the build longer by exactly the waits; the limit met when simulated again on its own.
+TEST(ThermalReplan, DwellsCoolTheDomeUnderTheLimitAtTheCostOfArcStarts)
+{
+  const Trajectory planned = fedDome();
+  const ThermalStudySettings settings = studySettings(planned);
+  NullProgress progress;
+  const ThermalStudy before = runThermalStudy(planned, settings, progress);
+  const double hottest = maxInterpass(before, planned);
+  ThermalReplanSettings replan;
+  replan.interpassMax = 20.0 + 0.7 * (hottest - 20.0);
+  replan.heat = false;
+  replan.dwell = true;
+  const ThermalReplanOutcome out = replanForInterpass(planned, settings, replan, progress);
+  ASSERT_TRUE(out.limitMet) << out.why;
+  EXPECT_EQ(out.applied, std::vector<std::string>{"dwell"});
+  EXPECT_GT(out.dwells, 0);
+  EXPECT_EQ(out.revolutionsAdded, 0);
+  EXPECT_EQ(out.revolutionsChanged, 0);
+  ASSERT_EQ(out.trajectory.size(), planned.size());
+  const std::vector<double>& wait = out.trajectory.extra.at(kDwellChannel);
+  int dwells = 0;
+  double waited = 0.0;
+  for (size_t i = 0; i < planned.size(); ++i) {
+    const TrajectoryPoint &a = planned.points[i], &b = out.trajectory.points[i];
+    EXPECT_EQ(b, a);
+    if (wait[i] > 0.0) {
+      // At a revolution's last point: the torch waits before the seam into the next one.
+      ASSERT_LT(i + 1, planned.size());
+      EXPECT_EQ(planned.points[i + 1].revolution, a.revolution + 1);
+      EXPECT_LE(wait[i], replan.maxDwell);
+      ++dwells;
+      waited += wait[i];
+    }
+  }
+  EXPECT_EQ(dwells, out.dwells);
+  EXPECT_NEAR(waited, out.dwellTime, 1e-9);
+  EXPECT_NEAR(out.buildTimeAdded, waited, 1e-6);
+
+  const ThermalStudy again = runThermalStudy(out.trajectory, settings, progress);
+  EXPECT_LE(maxInterpass(again, out.trajectory), replan.interpassMax);
+  EXPECT_NEAR(again.result.energy.in, before.result.energy.in, 1e-9 * before.result.energy.in);
+  std::printf(
+      "dome R 30: interpass %.0f C -> %.0f C (limit %.0f C) with %d dwells, %.0f s in all, %d rounds\n",
+      hottest, maxInterpass(again, out.trajectory), replan.interpassMax, out.dwells, out.dwellTime,
+      out.rounds);
+}
+
+// The source's own remedy: the overheating band laid thinner and faster at the same wire feed. The
+// model finds it raises the interpass temperature on the dome (the torch comes back sooner with the
+// same power, as the source's own travel-speed study shows for the valleys), so the re-planner keeps
+// the planned path and says why; with heat also chosen, heat then meets the limit.
+TEST(ThermalReplan, ThinnerFasterBandIsTriedAndJudgedBySimulation)
+{
+  const Trajectory planned = fedDome();
+  const ThermalStudySettings settings = studySettings(planned);
+  NullProgress progress;
+  const double hottest = maxInterpass(runThermalStudy(planned, settings, progress), planned);
+  ThermalReplanSettings replan;
+  replan.interpassMax = 20.0 + 0.7 * (hottest - 20.0);
+  replan.heat = false;
+  replan.deposit = true;
+  replan.hMin = 0.0;
+  EXPECT_FALSE(replanForInterpass(planned, settings, replan, progress).limitMet);
+
+  replan.hMin = 1.0;  // the test dome lays 2 mm: the window allows half
+  const ThermalReplanOutcome thin = replanForInterpass(planned, settings, replan, progress);
+  EXPECT_FALSE(thin.limitMet);
+  EXPECT_EQ(thin.rounds, 1);
+  EXPECT_NE(thin.why.find("did not lower the interpass"), std::string::npos) << thin.why;
+  EXPECT_EQ(thin.trajectory, planned);
+  EXPECT_TRUE(thin.applied.empty());
+
+  replan.heat = true;
+  const ThermalReplanOutcome both = replanForInterpass(planned, settings, replan, progress);
+  ASSERT_TRUE(both.limitMet) << both.why;
+  EXPECT_EQ(both.applied, std::vector<std::string>{"heat"});
+  EXPECT_GT(both.revolutionsChanged, 0);
 }
 
 TEST(ThermalReplan, StopsAtTheProcessLimitsAndSaysSo)

@@ -276,6 +276,7 @@ SPIRA_STAGE_REPORT(ThermalStageReport)
 SPIRA_STAGE_REPORT(MotionStageReport)
 SPIRA_STAGE_REPORT(KinematicsStageReport)
 SPIRA_STAGE_REPORT(ExportStageResult)
+SPIRA_STAGE_REPORT(DepositCheckRecord)
 
 #undef SPIRA_STAGE_REPORT
 

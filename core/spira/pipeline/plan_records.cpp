@@ -81,6 +81,20 @@ BranchingRecord branchingRecord(const BranchingSummary& b)
   return r;
 }
 
+SolidRecord solidRecord(const SolidWall& wall)
+{
+  SolidRecord r;
+  r.wallThickness = {wall.thickness.median, wall.thickness.thinnest, wall.thickness.thickest};
+  r.wallAreaFraction = wall.wallAreaFraction;
+  r.beadWidth = wall.beadWidth;
+  r.solidFaces = static_cast<std::int64_t>(wall.solidFaces);
+  r.midSurfaceFaces = wall.midSurface ? static_cast<std::int64_t>(wall.midSurface->faceCount()) : 0;
+  r.warnings = wall.warnings;
+  return r;
+}
+
+}  // namespace
+
 DepositCheckRecord depositCheckRecord(const DepositCheckReport& d)
 {
   DepositCheckRecord r;
@@ -105,20 +119,6 @@ DepositCheckRecord depositCheckRecord(const DepositCheckReport& d)
                                 d.coverRadius, d.largestGap,    d.largestGapAt};
   return r;
 }
-
-SolidRecord solidRecord(const SolidWall& wall)
-{
-  SolidRecord r;
-  r.wallThickness = {wall.thickness.median, wall.thickness.thinnest, wall.thickness.thickest};
-  r.wallAreaFraction = wall.wallAreaFraction;
-  r.beadWidth = wall.beadWidth;
-  r.solidFaces = static_cast<std::int64_t>(wall.solidFaces);
-  r.midSurfaceFaces = wall.midSurface ? static_cast<std::int64_t>(wall.midSurface->faceCount()) : 0;
-  r.warnings = wall.warnings;
-  return r;
-}
-
-}  // namespace
 
 FieldStageReport fieldStageReport(const PlanOutput& plan)
 {

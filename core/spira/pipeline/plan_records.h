@@ -15,6 +15,8 @@ FieldStageReport fieldStageReport(const PlanOutput& plan);
 GeneratricesStageReport generatricesStageReport(const PlanOutput& plan);
 SpiralStageReport spiralStageReport(const PlanOutput& plan, const std::string& strategy);
 ProcessStageReport processStageReport(const ProcessReport& process);
+// report.json's deposit_check: the verdict and its first flags.
+DepositCheckRecord depositCheckRecord(const DepositCheckReport& check);
 
 // The plan's report in report.json's layout without a document (the spiral's, the process's under
 // "process"): what the planning tests compare.

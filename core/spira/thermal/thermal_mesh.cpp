@@ -7,6 +7,7 @@
 #include <string>
 
 #include "spira/base/error.h"
+#include "spira/path/dwell.h"
 
 namespace spira {
 namespace {
@@ -65,6 +66,13 @@ class MeshBuilder {
         // next point's speed.
         const double v = i == begin ? speedOf(i) : speedOf(i - 1);
         const bool arc = i != begin && p.arcOn && traj_.points[i - 1].arcOn;
+        // A dwell: the torch waits at the previous point, arc off, before this segment.
+        if (const double wait = i == begin ? 0.0 : dwellAt(traj_, i - 1); wait > 0.0) {
+          mesh_.heatArcOn.push_back(0);
+          mesh_.heatWireFeed.push_back(0.0);
+          mesh_.heatTime.push_back(mesh_.heatTime.back() + wait);
+          mesh_.heatNode.push_back(mesh_.heatNode.back());
+        }
         const double t0 = mesh_.heatTime.back();
         const int sub = i == begin ? 1 : k;
         for (int q = 1; q <= sub; ++q) {

@@ -28,9 +28,23 @@ std::vector<double> stepTimes(const ThermalMesh& mesh, const ThermalSettings& s)
     for (int i = 1; i <= n; ++i) t.push_back(std::min(end, i * s.timeStep));
     return t;
   }
-  for (double h : mesh.heatTime)
-    if (h > t.back() + 1e-12) t.push_back(h);
-  const double dt = t.size() > 1 ? build / double(t.size() - 1) : std::max(1.0, s.coolingTime / 100.0);
+  // The mean step with the arc on also divides the cooling, and the waits with the arc off (travel
+  // between paths, dwells): one step over a long wait would let Crank-Nicolson ring.
+  double arcTime = 0.0;
+  int arcSteps = 0;
+  const std::vector<double>& h = mesh.heatTime;
+  for (size_t i = 0; i + 1 < h.size(); ++i)
+    if (h[i + 1] > h[i] + 1e-12 && mesh.heatArcOn[i]) arcTime += h[i + 1] - h[i], ++arcSteps;
+  const double dt = arcSteps > 0 ? arcTime / arcSteps : std::max(1.0, s.coolingTime / 100.0);
+  for (size_t i = 0; i < h.size(); ++i) {
+    if (!(h[i] > t.back() + 1e-12)) continue;
+    if (i > 0 && !mesh.heatArcOn[i - 1]) {
+      const double from = t.back(), gap = h[i] - from;
+      const int n = int(std::ceil(gap / dt - 1e-9));
+      for (int k = 1; k < n; ++k) t.push_back(from + k * gap / n);
+    }
+    t.push_back(h[i]);
+  }
   const int n = int(std::ceil(s.coolingTime / dt - 1e-9));
   for (int i = 1; i <= n; ++i) t.push_back(std::min(end, build + i * dt));
   return t;
