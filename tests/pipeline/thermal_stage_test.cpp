@@ -11,6 +11,7 @@
 #include "spira/base/progress.h"
 #include "spira/document/document.h"
 #include "spira/mesh/mesh_primitives.h"
+#include "spira/path/dwell.h"
 #include "spira/pipeline/document_plan.h"
 #include "spira/pipeline/planned_path.h"
 #include "spira/pipeline/thermal_stage.h"
@@ -224,6 +225,37 @@ TEST(ThermalStage, BadSettingsAreNamed)
   EXPECT_THROW(thermalStageSettingsFrom(values), InputError);
   EXPECT_FALSE(thermalStageEnabled(ParamSet()));
   EXPECT_TRUE(thermalSchema().selfCheck().empty());
+}
+
+// With only the dwell remedy, the stage adds waits before the hot revolutions: the path's points
+// and speeds are the plan's, the waits ride in its dwell channel, and the report says their cost.
+TEST(ThermalStage, DwellsBeforeTheHotRevolutionsWhenOnlyDwellIsChosen)
+{
+  Document doc(smallWall());
+  enableThermal(doc);
+  NullProgress progress;
+  const DocumentPlan plain = planDocument(doc.state(), builtinRegistry(), progress);
+  ASSERT_TRUE(plain.results.reports.thermal);
+  const double limit = 20.0 + 0.8 * (plain.results.reports.thermal->maxInterpass - 20.0);
+  doc.setParam(PlanSettings::kThermalSection, "interpass_max", limit);
+  doc.setParam(PlanSettings::kThermalSection, "remedy_heat", false);
+  doc.setParam(PlanSettings::kThermalSection, "remedy_dwell", true);
+  const DocumentPlan plan = planDocument(doc.state(), builtinRegistry(), progress);
+  ASSERT_TRUE(plan.results.thermal && plan.results.reports.thermal);
+  const ThermalStageReport& rep = *plan.results.reports.thermal;
+  ASSERT_TRUE(rep.limitMet.has_value());
+  EXPECT_TRUE(*rep.limitMet) << rep.whyNotMet.value_or("");
+  EXPECT_LE(rep.maxInterpass, limit);
+  EXPECT_EQ(rep.remediesApplied, std::vector<std::string>{"dwell"});
+  ASSERT_TRUE(rep.dwells.has_value());
+  EXPECT_GT(*rep.dwells, 0);
+  EXPECT_NEAR(rep.buildTimeAdded.value_or(0.0), rep.dwellTime.value_or(-1.0), 1e-6);
+  ASSERT_TRUE(plan.results.thermal->replanned);
+  const Trajectory& waiting = *plan.results.thermal->replanned;
+  EXPECT_EQ(waiting.points, plan.results.process->points);
+  EXPECT_TRUE(hasDwell(waiting));
+  EXPECT_EQ(*plannedPathOf(plan.results).trajectory, waiting);
+  EXPECT_EQ(plan.report["thermal"]["dwells"], *rep.dwells);
 }
 
 }  // namespace

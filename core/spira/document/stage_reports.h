@@ -279,8 +279,12 @@ struct ThermalStageReport {
   // With an interpass limit and re-planning: whether the re-planned path meets it, and its cost.
   std::optional<bool> limitMet;
   std::optional<std::int64_t> revolutionsAdded;
-  std::optional<double> buildTimeAdded;  // s
-  SecondsPerStep timings;                // mesh, simulation, solver
+  std::optional<double> buildTimeAdded;                     // s
+  std::optional<std::vector<std::string>> remediesApplied;  // "deposit", "heat", "dwell"
+  std::optional<std::int64_t> dwells;                       // each one more arc start
+  std::optional<double> dwellTime;                          // s
+  std::optional<std::string> whyNotMet;
+  SecondsPerStep timings;  // mesh, simulation, solver
   template <class S, class Io>
   static void fields(S& s, Io& io)
   {
@@ -292,7 +296,9 @@ struct ThermalStageReport {
     io("energy_stored_J", s.energyStored), io("energy_lost_J", s.energyLost), io("n_nodes", s.nodes);
     io("n_elements", s.elements), io("n_steps", s.steps), io("simulated_time_s", s.simulatedTime);
     io.optional("limit_met", s.limitMet), io.optional("revolutions_added", s.revolutionsAdded);
-    io.optional("build_time_added_s", s.buildTimeAdded), io("timings_s", s.timings);
+    io.optional("build_time_added_s", s.buildTimeAdded), io.optional("remedies_applied", s.remediesApplied);
+    io.optional("dwells", s.dwells), io.optional("dwell_time_s", s.dwellTime);
+    io.optional("why_not_met", s.whyNotMet), io("timings_s", s.timings);
   }
 };
 

@@ -148,7 +148,8 @@ DocumentPlan planDocument(const DocumentState& snapshot, const PluginRegistry& r
   // Off, the section is not read: a plan without the stage is the plan it always was.
   const ParamSet thermalValues = settings.section(PlanSettings::kThermalSection);
   if (thermalStageEnabled(thermalValues)) {
-    const ThermalStageSettings thermal = thermalStageSettingsFrom(thermalValues);
+    ThermalStageSettings thermal = thermalStageSettingsFrom(thermalValues);
+    thermal.windowMin = readPlanSections(settings.params).spiral.hMin;
     SubProgress thermalProgress(progress, kPlanShare, kThermalShare, "thermal");
     ThermalStageOutput heat = runThermalStage(
         *r.process, thermal, processSettingsFrom(settings.section(PlanSettings::kProcessSection)),

@@ -122,6 +122,15 @@ const ThermalBinding& thermalBinding()
                            kReplan)),
           &StoredThermal::interpassLimit),
       ThermalBinding::flag(
+          flagParam(
+              "remedy_deposit", false,
+              text("Re-plan: thinner layers",
+                   "Where the interpass limit is exceeded, lay that band with more, thinner revolutions "
+                   "at the same wire feed, so faster (the source's remedy), no thinner than h_min; one "
+                   "spiral still. Tried first; kept only if the simulation finds it cooler.",
+                   kReplan)),
+          &StoredThermal::remedyDeposit),
+      ThermalBinding::flag(
           flagParam("remedy_heat", true,
                     text("Re-plan: less heat",
                          "Where the interpass limit is exceeded, slow the wire feed and the travel speed "
@@ -129,6 +138,18 @@ const ThermalBinding& thermalBinding()
                          "slowest speeds, and simulate again until the limit holds.",
                          kReplan)),
           &StoredThermal::remedyHeat),
+      ThermalBinding::flag(
+          flagParam(
+              "remedy_dwell", false,
+              text("Re-plan: dwell",
+                   "Where the limit still is exceeded, stop before the revolution, lift the torch with the "
+                   "arc off and wait until the part has cooled. Each dwell adds an arc start.",
+                   kReplan)),
+          &StoredThermal::remedyDwell),
+      ThermalBinding::number(
+          numberParam("max_dwell", 600.0, 1.0, 36000.0, "s",
+                      text("Longest dwell", "The longest single wait the dwell remedy may add.", kReplan)),
+          &StoredThermal::maxDwell),
   });
   return binding;
 }

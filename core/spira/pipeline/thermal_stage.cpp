@@ -85,7 +85,8 @@ ThermalStageOutput runThermalStage(const Trajectory& path, const ThermalStageSet
 {
   ThermalStudySettings study = thermalStudySettingsFor(path, settings, process.beadWidth);
   ThermalStageOutput out;
-  if (!(settings.interpassLimit > 0.0) || !settings.remedyHeat) {
+  if (!(settings.interpassLimit > 0.0) ||
+      !(settings.remedyDeposit || settings.remedyHeat || settings.remedyDwell)) {
     const ThermalStudy s = runThermalStudy(path, study, progress);
     out.result = std::make_shared<const ThermalStageResult>(thermalStageResultOf(s));
     out.report =
@@ -96,13 +97,22 @@ ThermalStageOutput runThermalStage(const Trajectory& path, const ThermalStageSet
   ThermalReplanSettings replan;
   replan.interpassMax = settings.interpassLimit;
   replan.limits = process.limits;
+  replan.deposit = settings.remedyDeposit;
+  replan.heat = settings.remedyHeat;
+  replan.dwell = settings.remedyDwell;
+  replan.maxDwell = settings.maxDwell;
+  replan.hMin = settings.windowMin;
   const ThermalReplanOutcome o = replanForInterpass(path, study, replan, progress);
   ThermalStageResult result = thermalStageResultOf(o.study);
-  if (o.rounds > 0) result.replanned = std::make_shared<const Trajectory>(o.trajectory);
+  if (!(o.trajectory == path)) result.replanned = std::make_shared<const Trajectory>(o.trajectory);
   ThermalStageReport report = thermalStageReportOf(o.study, study, settings.interpassLimit);
   report.limitMet = o.limitMet;
   report.revolutionsAdded = o.revolutionsAdded;
   report.buildTimeAdded = o.buildTimeAdded;
+  report.remediesApplied = o.applied;
+  report.dwells = o.dwells;
+  report.dwellTime = o.dwellTime;
+  if (!o.why.empty()) report.whyNotMet = o.why;
   out.result = std::make_shared<const ThermalStageResult>(std::move(result));
   out.report = std::make_shared<const ThermalStageReport>(std::move(report));
   return out;

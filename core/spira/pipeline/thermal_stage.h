@@ -17,7 +17,10 @@ struct ThermalStageSettings {
   ThermalStudySettings study;
   double arcRadius = 0.0;       // mm; 0: half the bead width
   double interpassLimit = 0.0;  // C; 0: none
-  bool remedyHeat = true;       // re-plan to the limit (thermal_replan.h)
+  // The remedies that re-plan to the limit (thermal_replan.h); none: the limit is only reported.
+  bool remedyDeposit = false, remedyHeat = true, remedyDwell = false;
+  double maxDwell = 600.0;  // s
+  double windowMin = 0.0;   // mm: the spiral's h_min, the deposit remedy's floor (the plan fills it)
 };
 
 // Throws InputError for values outside the schema, an unknown material, or no arc power (power 0

@@ -299,6 +299,23 @@ void PlanPanel::refreshVerdict()
       lines << tr("Thermal: interpass up to %1 °C%2; %3 points at risk of collapse")
                    .arg(loc.toString(heat->maxInterpass, 'f', 0), limit,
                         loc.toString(static_cast<qlonglong>(heat->riskPoints)));
+      if (heat->remediesApplied && !heat->remediesApplied->empty()) {
+        QStringList cost;
+        if (heat->revolutionsAdded && *heat->revolutionsAdded > 0)
+          cost << tr("%n revolution(s) added", nullptr, static_cast<int>(*heat->revolutionsAdded));
+        if (heat->dwells && *heat->dwells > 0)
+          cost << tr("%n dwell(s) of %1 s in all (one more arc start each)", nullptr,
+                     static_cast<int>(*heat->dwells))
+                      .arg(loc.toString(heat->dwellTime.value_or(0.0), 'f', 0));
+        cost << tr("build time +%1 min").arg(loc.toString(heat->buildTimeAdded.value_or(0.0) / 60.0, 'f', 1));
+        QStringList applied;
+        for (const std::string& remedy : *heat->remediesApplied) applied << QString::fromStdString(remedy);
+        lines << tr("Re-planned (%1): %2")
+                     .arg(applied.join(QStringLiteral(", ")), cost.join(QStringLiteral(", ")));
+      }
+      if (heat->whyNotMet)
+        lines << tr("Interpass limit not met: %1")
+                     .arg(QString::fromStdString(*heat->whyNotMet).toHtmlEscaped());
     }
     if (feasible) {
       text = tr("<b>Feasible plan</b><br>%1").arg(lines.join(QStringLiteral("<br>")));
