@@ -285,5 +285,51 @@ TEST(ThermalGui, DomeWithTheThermalStage)
   EXPECT_TRUE(thermal->hasResult());
 }
 
+// The dwell remedy chosen in the Thermal tab: the plan re-planned with waits before the hot
+// revolutions near the closure, and the Plan dock's verdict says what that cost.
+TEST(ThermalGui, DwellRemedyAndItsCostInTheVerdict)
+{
+  Document doc;
+  MainWindow w(doc, builtinRegistry(), MainWindowOptions{false, false});
+  showAndWait(w);
+  ASSERT_TRUE(openAndWait(w, qpath(sourceDir() / "resources" / "samples" / "dome.stl")));
+  ui::PlanPanel* plan = w.planPanel();
+  ui::ParamPanel* section = plan->panel("thermal");
+  ASSERT_NE(section, nullptr);
+  qobject_cast<QCheckBox*>(section->field("enabled")->editor())->click();
+  qobject_cast<QDoubleSpinBox*>(section->field("interpass_max")->editor())->setValue(600.0);
+  qobject_cast<QCheckBox*>(section->field("remedy_heat")->editor())->setChecked(false);
+  auto* dwell = qobject_cast<QCheckBox*>(section->field("remedy_dwell")->editor());
+  ASSERT_NE(dwell, nullptr);
+  dwell->setChecked(true);
+  EXPECT_TRUE(doc.settings()->section("thermal").getBool("remedy_dwell"));
+  // Coarser than the sample's plan, no cooling tail and few frames: each re-planning round simulates
+  // the whole build again.
+  doc.setParam("decomposer.isovalue", "points_per_rev", 60);
+  doc.setParam("thermal", "cooling", 0.0);
+  doc.setParam("thermal", "frames", 20);
+  ASSERT_TRUE(planAndWait(w, 480000));
+  const Results& r = doc.results();
+  ASSERT_TRUE(r.thermal && r.reports.thermal) << w.lastErrorMessage().toStdString();
+  const ThermalStageReport& rep = *r.reports.thermal;
+  ASSERT_TRUE(rep.limitMet.has_value());
+  EXPECT_TRUE(*rep.limitMet) << rep.whyNotMet.value_or("");
+  EXPECT_LE(rep.maxInterpass, 600.0);
+  ASSERT_TRUE(rep.dwells.has_value());
+  EXPECT_GT(*rep.dwells, 0);
+  const QString verdict = plan->verdictLabel()->text();
+  EXPECT_TRUE(verdict.contains("Re-planned (dwell)")) << verdict.toStdString();
+  EXPECT_TRUE(verdict.contains(QStringLiteral("%1 dwell").arg(*rep.dwells))) << verdict.toStdString();
+  std::cout << "[ measure  ] dome re-planned with dwells: " << *rep.dwells << " dwells, "
+            << rep.dwellTime.value_or(0.0) << " s, max interpass " << rep.maxInterpass << " C\n";
+  plan->tabs()->setCurrentIndex(plan->tabs()->count() - 1);
+  for (QWidget* p = section; p; p = p->parentWidget())
+    if (auto* area = qobject_cast<QScrollArea*>(p)) {
+      area->ensureWidgetVisible(section->field("max_dwell"));
+      break;
+    }
+  saveDocScreenshot(w.captureImage(), "thermal-dwell.png");
+}
+
 }  // namespace
 }  // namespace spira::test
