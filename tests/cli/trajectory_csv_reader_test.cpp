@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 
 #include "spira/base/error.h"
 #include "spira/path/dwell.h"
@@ -236,6 +237,10 @@ TEST(TrajectoryCsvDwell, ReadsBackTheChannel)
   EXPECT_EQ(dwellAt(back, 10), 12.5);
   EXPECT_EQ(dwellAt(back, 33), 0.25);
   EXPECT_EQ(back.points[33].path, 1);
+  // A column of zeros plans no dwell: no channel, as when the column is not there.
+  std::string zeros = trajectoryCsv(t);
+  for (const char* wait : {",12.5\n", ",0.25\n"}) zeros.replace(zeros.find(wait), std::strlen(wait), ",0\n");
+  EXPECT_EQ(trajectoryFromCsv(zeros).extra.count(kDwellChannel), 0u);
   // Without the column there is no channel at all.
   EXPECT_EQ(trajectoryFromCsv(trajectoryCsv(awkwardTrajectory())).extra.count(kDwellChannel), 0u);
 }

@@ -141,7 +141,7 @@ ExportOutcome exportTrajectory(const PluginRegistry& registry, const Trajectory&
   // across the gap between them, then laid out with travel moves in between.
   const std::vector<SubPathRange> ranges = subPathRanges(planned);
   out.subPaths = ranges.size();
-  for (size_t i = 0; i < planned.size(); ++i) out.dwells += dwellAt(planned, i) > 0.0;
+  out.dwells = dwellTotals(planned).count;
   double zTop = planned.points.front().position.z();
   for (const TrajectoryPoint& p : planned.points) zTop = std::max(zTop, p.position.z());
   const double zSafe = zTop + job.prep.travelClearance;

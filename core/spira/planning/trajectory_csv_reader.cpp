@@ -129,6 +129,8 @@ Trajectory trajectoryFromCsv(const std::string& text, const std::string& what)
     if (columns == kMaxColumns) t.extra[kDwellChannel].push_back(v[kDwell]);
   }
   if (lineNo == 0) fail("the file is empty");
+  // As trajectoryCsv writes the column: a column of zeros plans no dwell, so it reads as none.
+  if (!hasDwell(t)) t.extra.erase(kDwellChannel);
   return t;
 }
 
