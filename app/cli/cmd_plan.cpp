@@ -57,7 +57,10 @@ void printSummary(const DocumentPlan& done, std::ostream& out)
     out << "closure point (" << plan.closure.point.x() << ", " << plan.closure.point.y() << ", "
         << plan.closure.point.z() << ") mm\n";
   out << "travel speed " << plan.process.travelSpeedMin << " .. " << plan.process.travelSpeedMax
-      << " mm/s, build time " << plan.process.buildTime / 60.0 << " min\n";
+      << " mm/s, build time " << plan.process.buildTime / 60.0 << " min";
+  if (plan.process.dwells > 0)
+    out << " with " << plan.process.dwells << " dwell(s) of " << plan.process.dwellTime << " s in all";
+  out << "\n";
   const DepositCheckReport& d = plan.deposits;
   out << "deposit check: " << d.pointsChecked << " arc-on points, measured height " << d.heightMin << " .. "
       << d.heightMax << " mm";

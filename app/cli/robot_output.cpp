@@ -118,6 +118,8 @@ void printExportSummary(const ExportOutcome& e, std::ostream& out)
       << " robot targets (chord <= " << std::setprecision(4) << e.prep.maxChordDeviation << " mm), "
       << e.result.files.size() << " file(s)"
       << (e.subPaths > 1 ? ", " + std::to_string(e.subPaths) + " sub-paths (one arc each)" : std::string())
+      << (e.dwells > 0 ? ", " + std::to_string(e.dwells) + " dwell(s) (arc off, torch lifted)"
+                       : std::string())
       << ":";
   for (const auto& f : e.result.files) out << " " << f.filename().string();
   out << "\n";

@@ -26,6 +26,9 @@
 // - a plan with several sub-paths has one Arc Start / Arc End per sub-path; between them the
 //   torch retracts, travels and approaches with FINE L moves and the arc off, and the move from
 //   one sub-path's side to the next is a J move (the CONFIG may change there);
+// - a dwell (path/dwell.h) ends the arc with Arc End, lifts the torch along its axis with a FINE
+//   L move, waits there with "WAIT t(sec)" and comes back with a FINE L move to strike again with
+//   Arc Start;
 // - with a led wire feed (export_path.h) each setpoint rides on the move during which it is due as
 //   "TB t sec,AO[n]=v" (t before that move's end point, never more than the move lasts); a
 //   motion line takes one such option, so of two setpoints due in one move the later is written;
@@ -254,6 +257,7 @@ class TpWriter {
       warnIfFlagged(program, k);
       if (path_.points[k].transfer)
         program.comment("travel to sub-path " + std::to_string(path_.points[k].path) + ", arc off");
+      if (path_.points[k].dwell > 0.0) program.comment("dwell: torch lifted, arc off");
       writeMove(program, k,
                 path_.points[k].transfer ? std::to_string(s_.jointSpeed) + "%" : pathSpeedText(k));
     }
@@ -283,6 +287,11 @@ class TpWriter {
       appendJointPosition(program.positions(), index, p.robotDeg, p.externalDeg, frames_);
     else
       appendCartesianPosition(program.positions(), index, p.pose, config(k), p.externalDeg, frames_);
+    if (p.dwell > 0.0) {
+      char buf[40];
+      std::snprintf(buf, sizeof buf, "WAIT %.2f(sec)", p.dwell);
+      program.statement(buf);
+    }
     if (p.strike) program.statement("Arc Start[" + std::to_string(s_.weldSchedule) + "]");
     if (p.stop) program.statement("Arc End[" + std::to_string(s_.endSchedule) + "]");
   }

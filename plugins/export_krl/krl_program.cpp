@@ -31,6 +31,9 @@
 // - a plan with several sub-paths has one arc per sub-path; between them the torch retracts,
 //   travels and approaches with exact LIN moves and the arc off, and the move from one sub-path's
 //   side to the next is a PTP (the arm configuration, S and T, may change there);
+// - a dwell (path/dwell.h) puts the arc out, lifts the torch along its axis with an exact LIN,
+//   waits there with WAIT SEC (which stops the advance run: nothing is approximated across it)
+//   and comes back to strike a new arc, with the weld job set again as at a sub-path's start;
 // - with a led wire feed (export_path.h) each setpoint fires its lead time before its point, on
 //   the move during which that time falls: DISTANCE=0 with a positive DELAY in the first half of
 //   the move, DISTANCE=1 with a negative DELAY in the second half, so the delay never reaches past
@@ -44,6 +47,7 @@ constexpr int kMmDecimals = 3;
 constexpr int kDegDecimals = 4;
 constexpr int kSpeedDecimals = 5;   // m/s: 0.01 mm/s
 constexpr int kAnalogDecimals = 4;  // $ANOUT is -1.0 .. 1.0
+constexpr int kWaitDecimals = 3;    // WAIT SEC: ms, the interpolation cycle's order
 constexpr size_t kCommentWidth = 100;
 constexpr const char* kJobSignal = "SPIRA_JOB";
 
@@ -155,6 +159,7 @@ class KrlWriter {
     } else {
       line(src, "PTP XP0");
     }
+    if (first.dwell > 0.0) line(src, "WAIT SEC " + waitText(first.dwell));
     declare(dat, "XP0", first.pose, first);
   }
 
@@ -181,17 +186,20 @@ class KrlWriter {
       const std::string name = "XP" + std::to_string(k);
       warnIfFlagged(src, k);
       if (p.transfer) comment(src, "travel to sub-path " + std::to_string(p.path) + ", arc off");
+      if (p.dwell > 0.0) comment(src, "dwell: torch lifted, arc off, wait " + waitText(p.dwell) + " s");
       if (!p.transfer) setSpeed(src, p.speed);
       if (!leadTriggers_.empty())
         for (const std::string& t : leadTriggers_[k]) line(src, t);
       else if (p.writeWfs && s_.process != ProcessCommand::Speed)
         setWireFeed(src, p.wfs, k);
       if (path_.points[k - 1].strike) {
-        if (s_.jobOutput > 0 && s_.endJob > 0 && path_.points[k - 1].path != path_.points.front().path)
+        if (s_.jobOutput > 0 && s_.endJob > 0 &&
+            (path_.points[k - 1].path != path_.points.front().path || dwelled_))
           line(src, std::string("TRIGGER WHEN DISTANCE=0 DELAY=0 DO ") + kJobSignal + "=" +
                         std::to_string(s_.weldJob) + " ; weld job at XP" + std::to_string(k - 1));
         line(src, "TRIGGER WHEN DISTANCE=0 DELAY=0 DO $OUT[" + std::to_string(s_.arcOutput) +
                       "]=TRUE ; arc on at XP" + std::to_string(k - 1));
+        dwelled_ = false;
       }
       if (p.stop && s_.jobOutput > 0 && s_.endJob > 0)
         line(src, std::string("TRIGGER WHEN DISTANCE=1 DELAY=0 DO ") + kJobSignal + "=" +
@@ -201,6 +209,10 @@ class KrlWriter {
                       "]=FALSE ; arc off at " + name);
       const bool exact = s_.cdis <= 0.0 || p.strike || p.stop || !p.inArc || k + 1 == n;
       line(src, (p.transfer ? "PTP " : "LIN ") + name + (exact ? "" : " C_DIS"));
+      if (p.dwell > 0.0) {
+        line(src, "WAIT SEC " + waitText(p.dwell));
+        dwelled_ = true;
+      }
       declare(dat, name, p.pose, p);
     }
   }
@@ -234,6 +246,13 @@ class KrlWriter {
       leadTriggers_[m].push_back(t + " DO $ANOUT[" + std::to_string(s_.wfsOutput) + "]=" + value +
                                  " ; WFS of XP" + std::to_string(k));
     }
+  }
+
+  static std::string waitText(double seconds)
+  {
+    std::string text;
+    appendFixed(text, seconds, kWaitDecimals);
+    return text;
   }
 
   void warnIfFlagged(std::string& src, size_t k) const
@@ -303,6 +322,7 @@ class KrlWriter {
   std::string speedText_;
   std::string analogText_;
   std::vector<std::vector<std::string>> leadTriggers_;  // by move; empty without a lead
+  bool dwelled_ = false;  // a dwell put the arc out (and the end job on) since the last strike
 };
 
 }  // namespace

@@ -6,6 +6,7 @@
 
 #include "cli_runner.h"
 #include "program_text.h"
+#include "spira/base/output_set.h"
 #include "support/test_support.h"
 
 namespace fs = std::filesystem;
@@ -67,6 +68,54 @@ TEST(CliExport, CylinderOnTheKukaCellGivesOneArcOnAndOneArcOff)
     EXPECT_EQ(lineCount, lines);
   }
   EXPECT_TRUE(found);
+}
+
+// A plan folder whose trajectory.csv carries a dwell (the thermal re-planning's column): the program
+// puts the arc out there, waits lifted and strikes again; the csv format keeps the column.
+TEST(CliExport, ADwellInThePlanFolderWaitsInTheProgram)
+{
+  TempDir dir;
+  const CliRun r =
+      runCli({"plan", resource("samples/open_cylinder.stl").string(), "-o", dir.path().string()});
+  ASSERT_EQ(r.exitCode, 0) << r.err << r.out;
+  const std::string plain = readBytes(dir / "trajectory.csv");
+  std::string withDwell;
+  size_t row = 0, dwellRow = 0;
+  for (size_t pos = 0; pos < plain.size(); ++row) {
+    const size_t end = plain.find('\n', pos);
+    const std::string line = plain.substr(pos, end - pos);
+    pos = end + 1;
+    if (dwellRow == 0 && row > 100 && line.find(",1,0") == line.size() - 4) dwellRow = row;  // arc on
+    withDwell += line + (row == 0 ? ",dwell_s" : row == dwellRow ? ",20" : ",0") + "\n";
+  }
+  ASSERT_GT(dwellRow, 0u);
+  // Written as the plan set it is part of (the folder's manifest refuses a file changed by hand).
+  std::vector<OutputFile> set;
+  for (const auto& f : fs::directory_iterator(dir.path()))
+    if (f.is_regular_file() && f.path().filename() != kOutputManifest)
+      set.push_back({f.path().filename().string(),
+                     f.path().filename() == "trajectory.csv" ? withDwell : readBytes(f.path())});
+  replaceOutputSet(dir.path(), OutputKind::Plan, set);
+
+  const fs::path krl = dir / "krl";
+  const CliRun e = runCli({"export", dir.path().string(), "--format", "krl", "-o", krl.string()});
+  ASSERT_EQ(e.exitCode, 0) << e.err << e.out;
+  EXPECT_NE(e.out.find("1 dwell(s)"), std::string::npos) << e.out;
+  std::string src;
+  for (const auto& f : fs::directory_iterator(krl))
+    if (f.path().extension() == ".src") src += readBytes(f.path());
+  EXPECT_EQ(count(src, "WAIT SEC 20.000"), 1u);
+  EXPECT_EQ(count(src, "$OUT[1]=TRUE"), 2u);
+  EXPECT_EQ(count(src, "$OUT[1]=FALSE"), 2u);
+
+  const fs::path csv = dir / "csv";
+  const CliRun c = runCli({"export", dir.path().string(), "--format", "csv", "-o", csv.string()});
+  ASSERT_EQ(c.exitCode, 0) << c.err << c.out;
+  const std::string written = readBytes(csv / "trajectory.csv");
+  EXPECT_EQ(written.substr(0, written.find('\n')), withDwell.substr(0, withDwell.find('\n')));
+  EXPECT_EQ(count(written, "\n"), count(withDwell, "\n"));
+  EXPECT_EQ(count(written, ",20\n"), 1u);
+  EXPECT_EQ(count(written, ",0\n"), row - 2);
 }
 
 TEST(CliExport, UnknownFormatsAndMissingPlansAreRefused)

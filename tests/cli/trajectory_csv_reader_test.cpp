@@ -1,8 +1,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 
 #include "spira/base/error.h"
+#include "spira/path/dwell.h"
 #include "spira/planning/plan_files.h"
 #include "spira/planning/trajectory_csv_reader.h"
 
@@ -181,6 +183,98 @@ TEST(TrajectoryCsvValidation, EveryValueIsFiniteAndNamed)
   const std::string clipped = refusal(withCell(10, 1, huge + "x"));
   EXPECT_NE(clipped.find("found '" + std::string(60, '9') + "...'"), std::string::npos) << clipped.size();
   EXPECT_LT(clipped.size(), 200u);
+}
+
+}  // namespace
+}  // namespace spira
+
+namespace spira {
+namespace {
+
+// awkwardTrajectory() with a 12.5 s dwell at point 10 and a 0.25 s one at point 33.
+Trajectory dwellTrajectory()
+{
+  Trajectory t = awkwardTrajectory();
+  std::vector<double> dwell(t.size(), 0.0);
+  dwell[10] = 12.5;
+  dwell[33] = 0.25;
+  t.extra[kDwellChannel] = dwell;
+  return t;
+}
+
+TEST(TrajectoryCsvDwell, TheColumnIsWrittenOnlyWithADwell)
+{
+  const std::string plain = trajectoryCsv(awkwardTrajectory());
+  Trajectory zeros = awkwardTrajectory();
+  zeros.extra[kDwellChannel] = std::vector<double>(zeros.size(), 0.0);
+  EXPECT_EQ(trajectoryCsv(zeros), plain);  // a channel of zeros plans no dwell
+
+  const std::string text = trajectoryCsv(dwellTrajectory());
+  EXPECT_EQ(text.substr(0, text.find('\n')),
+            "index,x,y,z,nx,ny,nz,tx,ty,tz,bx,by,bz,rev,gen,height,ts,wfs,arc,path,dwell_s");
+  // Every line is the plain one plus the wait: 12.5 on row 10 (line 12), 0 on rows without a dwell.
+  std::string stripped, lastColumns;
+  for (size_t pos = text.find('\n') + 1; pos < text.size();) {
+    const size_t end = text.find('\n', pos);
+    const size_t comma = text.rfind(',', end);
+    stripped += text.substr(pos, comma - pos) + "\n";
+    lastColumns += text.substr(comma + 1, end - comma - 1) + " ";
+    pos = end + 1;
+  }
+  EXPECT_EQ(plain.substr(0, plain.find('\n') + 1) + stripped, plain);
+  std::string expected;
+  for (size_t i = 0; i < 50; ++i) expected += i == 10 ? "12.5 " : i == 33 ? "0.25 " : "0 ";
+  EXPECT_EQ(lastColumns, expected);
+}
+
+TEST(TrajectoryCsvDwell, ReadsBackTheChannel)
+{
+  const Trajectory t = dwellTrajectory();
+  const Trajectory back = trajectoryFromCsv(trajectoryCsv(t));
+  ASSERT_EQ(back.size(), t.size());
+  ASSERT_EQ(back.extra.count(kDwellChannel), 1u);
+  EXPECT_EQ(back.extra.at(kDwellChannel), t.extra.at(kDwellChannel));
+  EXPECT_EQ(dwellAt(back, 10), 12.5);
+  EXPECT_EQ(dwellAt(back, 33), 0.25);
+  EXPECT_EQ(back.points[33].path, 1);
+  // A column of zeros plans no dwell: no channel, as when the column is not there.
+  std::string zeros = trajectoryCsv(t);
+  for (const char* wait : {",12.5\n", ",0.25\n"}) zeros.replace(zeros.find(wait), std::strlen(wait), ",0\n");
+  EXPECT_EQ(trajectoryFromCsv(zeros).extra.count(kDwellChannel), 0u);
+  // Without the column there is no channel at all.
+  EXPECT_EQ(trajectoryFromCsv(trajectoryCsv(awkwardTrajectory())).extra.count(kDwellChannel), 0u);
+}
+
+// The CSV of dwellTrajectory() with the dwell of data row `row` (0-based) replaced by `value`.
+std::string withDwell(size_t row, const std::string& value)
+{
+  std::string text = trajectoryCsv(dwellTrajectory());
+  size_t start = text.find('\n') + 1;
+  for (size_t r = 0; r < row; ++r) start = text.find('\n', start) + 1;
+  const size_t end = text.find('\n', start);
+  const size_t comma = text.rfind(',', end) + 1;
+  text.replace(comma, end - comma, value);
+  return text;
+}
+
+TEST(TrajectoryCsvDwell, DwellsAreFiniteWaitsWhereTheArcBurns)
+{
+  EXPECT_EQ(refusal(withDwell(12, "-1")),
+            "plan/trajectory.csv line 14: column 21 (dwell_s) must be a wait in s from 0, found -1");
+  EXPECT_NE(refusal(withDwell(12, "inf")).find("line 14: column 21 (dwell_s) is not a finite number"),
+            std::string::npos);
+  // Row 49 has the arc off: the torch is not depositing there, so it cannot stop the arc there.
+  EXPECT_EQ(refusal(withDwell(49, "3")),
+            "plan/trajectory.csv line 51: column 21 (dwell_s) must be 0 where the arc is off (a dwell stops "
+            "the arc), found 3");
+  EXPECT_EQ(refusal(withDwell(49, "0")), "accepted");
+  EXPECT_EQ(trajectoryFromCsv(withDwell(12, "4")).extra.at(kDwellChannel)[12], 4.0);
+  // A row one column short of the dwell header is refused like any short row.
+  std::string shortRow = trajectoryCsv(dwellTrajectory());
+  const size_t row0 = shortRow.find('\n') + 1;
+  const size_t end0 = shortRow.find('\n', row0);
+  shortRow.erase(shortRow.rfind(',', end0), end0 - shortRow.rfind(',', end0));
+  EXPECT_NE(refusal(shortRow).find("line 2: expected 21 columns"), std::string::npos) << refusal(shortRow);
 }
 
 }  // namespace

@@ -14,6 +14,7 @@
 #include "spira/base/version.h"
 #include "spira/document/document.h"
 #include "spira/document/project_file.h"
+#include "spira/path/dwell.h"
 #include "support/test_support.h"
 
 namespace spira {
@@ -243,6 +244,30 @@ TEST(ProjectFile, DocumentSaveAsAndOpenRoundTrip)
   EXPECT_FALSE(other.isModified());
   EXPECT_FALSE(other.canUndo());
   EXPECT_EQ(loadProject(path), saved);
+}
+
+// The thermal re-planning's dwells (path/dwell.h) ride in the process trajectory's extra channels.
+TEST(ProjectFile, ADwellSurvivesSaveAndOpen)
+{
+  test::TempDir dir;
+  DocumentState state = test::fullState();
+  Trajectory process = *state.results.process;
+  process.extra.clear();
+  std::vector<double> dwell(process.size(), 0.0);
+  dwell[4] = 17.25;
+  process.extra[kDwellChannel] = dwell;
+  state.results.process = std::make_shared<const Trajectory>(process);
+  Document doc(state);
+  const auto path = dir / "dwell.spira";
+  doc.saveAs(path);
+
+  Document other;
+  other.open(path);
+  const Trajectory& back = *other.state().results.process;
+  EXPECT_TRUE(hasDwell(back));
+  EXPECT_EQ(back.extra.at(kDwellChannel), dwell);
+  EXPECT_EQ(dwellAt(back, 4), 17.25);
+  EXPECT_EQ(dwellAt(back, 5), 0.0);
 }
 
 TEST(ProjectFile, FailedOpenLeavesTheDocumentUntouched)

@@ -36,6 +36,8 @@ SpiralStageReport everySpiralKey()
   s.violationPoints = {{3, 0, 7, 2.4, "start_up", true}};
   s.closurePoint = Vec3(0.0, 0.0, 60.0);
   s.closureDistance = 88.5;
+  s.dwells = 3;
+  s.dwellTime = 42.5;
   s.timings = {{"field", 0.5}, {"total", 1.25}};
   s.paths = {PathRecord{}};
   s.paths[0].closurePoint = Vec3(1.0, 1.0, 1.0);
@@ -87,7 +89,11 @@ TEST(StageReportCodec, SpiralReportReadsBackToTheSameValuesAndText)
   EXPECT_EQ(j.at("closure_distance"), 88.5);
   EXPECT_EQ(j.at("paths")[0].at("role"), "");
   EXPECT_EQ(j.at("branching").at("depth_limited"), true);
-  EXPECT_EQ(j.size(), 43u);
+  EXPECT_EQ(j.at("n_dwells"), 3);
+  EXPECT_TRUE(j.at("n_dwells").is_number_integer());
+  EXPECT_EQ(j.at("dwell_time_s"), 42.5);
+  EXPECT_EQ(back.dwellTime, 42.5);
+  EXPECT_EQ(j.size(), 45u);
 }
 
 TEST(StageReportCodec, EmptyOptionalsAreLeftOutOrWrittenAsNull)
@@ -97,6 +103,8 @@ TEST(StageReportCodec, EmptyOptionalsAreLeftOutOrWrittenAsNull)
   EXPECT_FALSE(j.contains("closure_distance"));
   EXPECT_FALSE(j.contains("solid"));
   EXPECT_FALSE(j.contains("branching"));
+  EXPECT_FALSE(j.contains("n_dwells"));  // a plan without a dwell keeps the report it always had
+  EXPECT_FALSE(j.contains("dwell_time_s"));
   EXPECT_FALSE(j.at("deposit_check").contains("coverage"));
   EXPECT_EQ(j.size(), 40u);
   const SpiralStageReport back = roundTrip(SpiralStageReport{});

@@ -131,6 +131,10 @@ struct Runner {
         vel = std::atof(line.c_str() + 8);
       } else if (startsWith(line, "TRIGGER ")) {
         triggers.push_back(line);
+      } else if (startsWith(line, "WAIT SEC ")) {
+        if (run.moves.empty()) run.problems.push_back(name + ": WAIT SEC before the first move");
+        run.waitAfter.push_back(run.moves.size() - 1);
+        run.waitSeconds.push_back(std::atof(line.c_str() + 9));
       } else if (startsWith(line, "LIN ") || startsWith(line, "PTP ")) {
         std::istringstream s(line);
         KrlMove m;

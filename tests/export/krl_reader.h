@@ -36,6 +36,8 @@ struct KrlRun {
   std::vector<std::string> programs;    // in the order they ran
   std::vector<std::string> problems;    // format violations found while reading
   std::vector<std::string> statements;  // every non-comment statement of the main program
+  std::vector<size_t> waitAfter;        // index into moves of the move each WAIT SEC follows
+  std::vector<double> waitSeconds;      // and its time, s
 };
 
 // Reads "<dir>/<name>.dat": every DECL E6POS.

@@ -185,6 +185,13 @@ TpRun runTp(const fs::path& dir, const std::string& mainName)
         if (startsWith(line.body, "CALL ")) program(line.body.substr(5));
         if (startsWith(line.body, "Arc Start[")) run.arcStartAfter.push_back(run.moves.size() - 1);
         if (startsWith(line.body, "Arc End[")) run.arcEndAfter.push_back(run.moves.size() - 1);
+        if (startsWith(line.body, "WAIT ")) {
+          const size_t close = line.body.find("(sec)");
+          if (close == std::string::npos || close + 5 != line.body.size())
+            run.problems.push_back(name + ": bad WAIT '" + line.body + "'");
+          run.waitAfter.push_back(run.moves.size() - 1);
+          run.waitSeconds.push_back(std::atof(line.body.c_str() + 5));
+        }
         continue;
       }
       TpMove m;

@@ -56,6 +56,8 @@ struct TpRun {
   std::vector<std::string> statements;  // non-motion statements of every program, in run order
   std::vector<size_t> arcStartAfter;    // index into moves of the move each Arc Start follows
   std::vector<size_t> arcEndAfter;
+  std::vector<size_t> waitAfter;    // index into moves of the move each WAIT t(sec) follows
+  std::vector<double> waitSeconds;  // and its time, s
 };
 
 TpFile readTpFile(const std::filesystem::path& file);

@@ -8,6 +8,7 @@
 #include "spira/base/error.h"
 #include "spira/base/progress.h"
 #include "spira/base/units.h"
+#include "spira/path/dwell.h"
 #include "spira/path/process_model.h"
 #include "spira/path/spiral_builder.h"
 #include "support/test_support.h"
@@ -105,6 +106,29 @@ TEST(ProcessModel, ConstantTravelSpeedModulatesWireFeed)
     EXPECT_NEAR(p.wireFeed, 4.0 * 5.2 * 6.0 * p.height / kPi, 1e-9);
   }
   EXPECT_NEAR(rep.buildTime, t.length() / 6.0, 1e-9 * rep.buildTime);
+}
+
+// The dwells' waits (path/dwell.h) are part of the build time.
+TEST(ProcessModel, DwellsAddTheirWaitsToTheBuildTime)
+{
+  Trajectory plain = modulatedSpiral();
+  ProcessSettings ps;
+  ps.mode = ProcessMode::ConstantTravelSpeed;
+  ps.travelSpeed = 6.0;
+  const ProcessReport without = applyProcess(plain, ps);
+  EXPECT_EQ(without.dwells, 0u);
+  EXPECT_EQ(without.dwellTime, 0.0);
+  Trajectory t = modulatedSpiral();
+  std::vector<double> dwell(t.size(), 0.0);
+  dwell[5] = 30.0;
+  dwell[t.size() / 2] = 12.5;
+  t.extra[kDwellChannel] = dwell;
+  const ProcessReport rep = applyProcess(t, ps);
+  EXPECT_EQ(rep.dwells, 2u);
+  EXPECT_EQ(rep.dwellTime, 42.5);
+  EXPECT_NEAR(rep.buildTime, without.buildTime + 42.5, 1e-9 * rep.buildTime);
+  EXPECT_EQ(rep.wireLength, without.wireLength);  // no wire is fed during a wait
+  EXPECT_EQ(t.points, plain.points);
 }
 
 TEST(ProcessModel, CalibrationTableInterpolatesPiecewiseLinearly)

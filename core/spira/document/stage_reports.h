@@ -217,7 +217,9 @@ struct SpiralStageReport {
   std::optional<Vec3> closurePoint;
   std::optional<double> closureDistance;
   double pathLength = 0.0, maxJump = 0.0, seamRiseMax = 0.0, buildTime = 0.0;
-  SecondsPerStep timings;  // per planning stage, with "total"
+  std::optional<std::int64_t> dwells;  // with a dwell (path/dwell.h): how many, and their waits
+  std::optional<double> dwellTime;     // s, included in buildTime
+  SecondsPerStep timings;              // per planning stage, with "total"
   std::vector<std::string> warnings;
   std::int64_t pathCount = 1;
   std::vector<PathRecord> paths;
@@ -241,7 +243,8 @@ struct SpiralStageReport {
     io("closure_gap", s.closureGap), io("violation_points", s.violationPoints);
     io.nullable("closure_point", s.closurePoint), io.optional("closure_distance", s.closureDistance);
     io("path_length", s.pathLength), io("max_jump", s.maxJump), io("seam_rise_max", s.seamRiseMax);
-    io("build_time_s", s.buildTime), io("timings_s", s.timings), io("warnings", s.warnings);
+    io("build_time_s", s.buildTime), io.optional("n_dwells", s.dwells);
+    io.optional("dwell_time_s", s.dwellTime), io("timings_s", s.timings), io("warnings", s.warnings);
     io("n_paths", s.pathCount), io("paths", s.paths), io.optional("branching", s.branching);
   }
 };

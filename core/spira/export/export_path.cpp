@@ -6,6 +6,7 @@
 #include "spira/base/error.h"
 #include "spira/base/number_text.h"
 #include "spira/export/fixed_number.h"
+#include "spira/path/dwell.h"
 #include "spira/path/tool_frame.h"
 
 namespace spira {
@@ -122,7 +123,7 @@ void checkJointMotion(const JointTrajectory& joints, ExportPath& path)
                             "); a linear move cannot switch branches, check the kinematics solution");
 }
 
-// One arc per sub-path, from its first to its last arc-on point.
+// One arc per run of a sub-path between waits, from its first to its last arc-on point.
 void findArcs(const Trajectory& trajectory, ExportPath& path)
 {
   const auto& pts = trajectory.points;
@@ -130,7 +131,8 @@ void findArcs(const Trajectory& trajectory, ExportPath& path)
   size_t gaps = 0, firstGap = 0, runStart = 0;
   for (size_t i = 0; i < n; ++i) path.points[i].path = pts[i].path;
   for (size_t i = 1; i <= n; ++i) {
-    if (i < n && pts[i].path == pts[runStart].path) continue;
+    const bool newPath = i < n && pts[i].path != pts[runStart].path;
+    if (i < n && !newPath && path.points[i].dwell <= 0.0) continue;
     size_t first = runStart, last = i;
     while (first < i && !pts[first].arcOn) ++first;
     while (last > first && !pts[last - 1].arcOn) --last;
@@ -145,7 +147,7 @@ void findArcs(const Trajectory& trajectory, ExportPath& path)
       if (path.arcCount++ == 0) path.arcStart = first;
       path.arcEnd = last;
     }
-    if (i < n) path.points[i].transfer = true;
+    if (newPath) path.points[i].transfer = true;
     runStart = i;
   }
   if (path.arcCount == 0)
@@ -227,6 +229,18 @@ ExportPath prepareExportPath(const ExportInput& input, const PathOptions& option
   path.hasJoints = joints != nullptr;
   path.hasPositioner = joints && joints->hasPositioner;
   path.points.resize(n);
+  for (size_t i = 0; i < n; ++i) {
+    const double wait = dwellAt(trajectory, i);
+    if (!(wait >= 0.0) || !std::isfinite(wait))
+      throw InputError("the plan's " + pointText(i) + " has dwell " + roundedText(wait, 3) +
+                           " s; a dwell is a wait of 0 s or more",
+                       "plan the part again");
+    if (wait > 0.0 && trajectory.points[i].arcOn)
+      throw InputError("the plan's " + pointText(i) + " waits " + roundedText(wait, 3) +
+                           " s with the arc on; a program waits only at a dwell's lift, arc off",
+                       "export the plan with spira-cli export or the Export dialog, which lay out the lifts");
+    path.points[i].dwell = wait;
+  }
   findArcs(trajectory, path);
   const auto command = trajectory.extra.find(kWfsCommandChannel);
   const auto lead = trajectory.extra.find(kWfsLeadChannel);

@@ -48,6 +48,7 @@ struct ExportPoint {
   bool strike = false;    // the arc is struck here (first point of an arc)
   bool stop = false;      // the arc is put out here (last point of an arc)
   bool transfer = false;  // move k changes sub-path: a joint move (the arm configuration may change)
+  double dwell = 0.0;     // s: the torch waits here, arc off, after move k (a dwell's lift, path/dwell.h)
   std::array<double, 6> robotDeg{};
   std::array<double, 2> externalDeg{};
   int kukaStatus = 0;
@@ -64,7 +65,7 @@ struct ExportPath {
   bool hasApproach = false;
   size_t arcStart = 0;   // first point with the arc on: the first arc is struck there
   size_t arcEnd = 0;     // last point with the arc on: the last arc is put out there
-  size_t arcCount = 0;   // arcs: one per sub-path (the points' strike/stop flags)
+  size_t arcCount = 0;   // arcs: one per sub-path and one more per dwell inside one (strike/stop flags)
   bool hasLead = false;  // the wire feed is led (kWfsLeadChannel): setpoints carry wfsLead
   bool hasJoints = false;
   bool hasPositioner = false;
@@ -76,13 +77,15 @@ struct ExportPath {
 // Checks `input` against `options` and builds the targets. Every sub-path (a run of one `path`
 // index) gets one arc, from its first to its last arc-on point; its points before and after that
 // (travel moves) and the move between sub-paths run with the arc off and write no process output.
+// A wait (the dwell channel of path/dwell.h, > 0 only at arc-off points: the lifts that
+// exportTrajectory lays out) cuts a sub-path's arc in two: the arc stops before it and is struck
+// again after it.
 // Throws InputError when the plan
 // cannot be exported: fewer than two points, no deposition (arc on at fewer than two points),
-// non-finite or non-positive channels, a joint trajectory of another size or controller; and
-// InfeasibleError (unless options.force) for points that are unreachable, in collision or outside
-// joint limits.
-// Recoverable findings (joint speeds over the limits, configuration changes, arc gaps) are
-// returned as warnings.
+// non-finite or non-positive channels, a wait at an arc-on point, a joint trajectory of another size or
+// controller; and InfeasibleError (unless options.force) for points that are unreachable, in collision or
+// outside joint limits. Recoverable findings (joint speeds over the limits, configuration changes, arc gaps)
+// are returned as warnings.
 ExportPath prepareExportPath(const ExportInput& input, const PathOptions& options, Progress& progress);
 
 }  // namespace spira

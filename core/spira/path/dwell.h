@@ -21,6 +21,25 @@ inline double dwellAt(const Trajectory& t, size_t i)
   return it == t.extra.end() || i >= it->second.size() ? 0.0 : it->second[i];
 }
 
+// How many points of `t` wait, and the waits' sum, s.
+struct DwellTotals {
+  size_t count = 0;
+  double seconds = 0.0;
+};
+
+inline DwellTotals dwellTotals(const Trajectory& t)
+{
+  DwellTotals d;
+  const auto it = t.extra.find(kDwellChannel);
+  if (it == t.extra.end()) return d;
+  for (double s : it->second)
+    if (s > 0.0) {
+      ++d.count;
+      d.seconds += s;
+    }
+  return d;
+}
+
 inline bool hasDwell(const Trajectory& t)
 {
   const auto it = t.extra.find(kDwellChannel);

@@ -6,6 +6,7 @@
 
 #include "spira/base/error.h"
 #include "spira/base/units.h"
+#include "spira/path/dwell.h"
 
 namespace spira {
 
@@ -154,6 +155,10 @@ ProcessReport applyProcess(Trajectory& path, const ProcessSettings& s)
       report.wireLength += p.wireFeed * dt;
     }
   }
+  const DwellTotals dwell = dwellTotals(path);
+  report.dwells = dwell.count;
+  report.dwellTime = dwell.seconds;
+  report.buildTime += dwell.seconds;
   std::stable_sort(report.violations.begin(), report.violations.end(),
                    [](const ProcessViolation& a, const ProcessViolation& b) { return a.point < b.point; });
   report.depositVolume = report.wireLength * kPi * s.wireDiameter * s.wireDiameter / 4.0;

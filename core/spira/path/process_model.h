@@ -73,7 +73,9 @@ struct ProcessViolation {
 };
 
 struct ProcessReport {
-  double buildTime = 0.0;      // s, each segment at the (clamped) travel speed of its first point
+  double buildTime = 0.0;      // s, each segment at the (clamped) travel speed of its first point, + dwells
+  size_t dwells = 0;           // points with a dwell (path/dwell.h)
+  double dwellTime = 0.0;      // s: their waits, in buildTime (the lift and return moves are the program's)
   double wireLength = 0.0;     // mm of wire fed over the build
   double depositVolume = 0.0;  // mm^3: wireLength * pi d^2 / 4
   double travelSpeedMin = 0.0, travelSpeedMax = 0.0;  // mm/s

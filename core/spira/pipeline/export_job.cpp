@@ -3,9 +3,11 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 
 #include "spira/base/error.h"
 #include "spira/export/export_path.h"
+#include "spira/path/dwell.h"
 #include "spira/pipeline/plan_motion.h"
 #include "spira/pipeline/sub_paths.h"
 #include "spira/prep/actuator_lead.h"
@@ -61,6 +63,39 @@ Trajectory travelBetween(const TrajectoryPoint& from, const TrajectoryPoint& to,
   return t;
 }
 
+// The lifted pose of a dwell at `at`: travelBetween from a point to itself, with no safe height to
+// rise to, is the retract along the torch axis alone. It carries the wait in the dwell channel.
+Trajectory dwellLift(const TrajectoryPoint& at, double seconds, const PrepParams& prep)
+{
+  Trajectory lift = travelBetween(at, at, -std::numeric_limits<double>::infinity(), prep);
+  lift.extra[kDwellChannel] = {seconds};
+  return lift;
+}
+
+// The pieces of one sub-path that are prepared on their own: a dwell inside it ends one piece at
+// its point and starts the next there, so no smoothing or decimation runs across the lift (nor
+// drops or moves the point the torch leaves and comes back to). Dwells at the sub-path's ends need
+// no cut: the torch is lifted there anyway, on the travel before or after.
+std::vector<SubPathRange> dwellPieces(const Trajectory& planned, const SubPathRange& range)
+{
+  std::vector<SubPathRange> pieces{range};
+  for (size_t i = range.begin + 1; i + 1 < range.end; ++i) {
+    if (dwellAt(planned, i) <= 0.0) continue;
+    pieces.back().end = i + 1;
+    pieces.push_back({range.path, i, range.end});
+  }
+  return pieces;
+}
+
+// Puts a wait on the travel point `k` (the retract or the approach of travelBetween).
+void addWait(Trajectory& travel, size_t k, double seconds)
+{
+  if (seconds <= 0.0) return;
+  std::vector<double>& dwell = travel.extra[kDwellChannel];
+  dwell.resize(travel.size(), 0.0);
+  dwell[k] += seconds;
+}
+
 // The wire-feed setpoints led by the feeder's lag, per stretch of arc: the channels
 // kWfsCommandChannel (setpoint due at each point) and kWfsLeadChannel (how long before reaching
 // the point it must be written) that the exporters read.
@@ -106,6 +141,7 @@ ExportOutcome exportTrajectory(const PluginRegistry& registry, const Trajectory&
   // across the gap between them, then laid out with travel moves in between.
   const std::vector<SubPathRange> ranges = subPathRanges(planned);
   out.subPaths = ranges.size();
+  out.dwells = dwellTotals(planned).count;
   double zTop = planned.points.front().position.z();
   for (const TrajectoryPoint& p : planned.points) zTop = std::max(zTop, p.position.z());
   const double zSafe = zTop + job.prep.travelClearance;
@@ -114,24 +150,50 @@ ExportOutcome exportTrajectory(const PluginRegistry& registry, const Trajectory&
   Trajectory program;
   std::vector<bool> colliding;  // per program point: it stands for a colliding planned point
   const double total = static_cast<double>(planned.size());
+  // A dwell's wait at the last point of a sub-path, due on the retract that follows it.
+  double pendingWait = 0.0;
+  bool first = true;
   for (size_t r = 0; r < ranges.size(); ++r) {
-    SubProgress prepProgress(progress, 0.4 * static_cast<double>(ranges[r].begin) / total,
-                             0.4 * static_cast<double>(ranges[r].end) / total, "path preparation");
-    const PreparedTrajectory prepared =
-        prepareTrajectory(subTrajectory(planned, ranges[r]), job.prep, prepProgress);
-    if (r > 0 && !prepared.trajectory.empty())
-      appendTrajectory(
-          program, travelBetween(program.points.back(), prepared.trajectory.points.front(), zSafe, job.prep));
-    colliding.resize(program.size(), false);
-    for (double at : prepared.sourceParam) {
-      // A target between two planned points collides when either does.
-      const size_t lo = ranges[r].begin + static_cast<size_t>(std::floor(at));
-      const size_t hi = std::min(ranges[r].begin + static_cast<size_t>(std::ceil(at)), ranges[r].end - 1);
-      colliding.push_back(!job.plannedCollision.empty() &&
-                          (job.plannedCollision[lo] || job.plannedCollision[hi]));
+    const std::vector<SubPathRange> pieces = dwellPieces(planned, ranges[r]);
+    for (size_t q = 0; q < pieces.size(); ++q) {
+      const SubPathRange& piece = pieces[q];
+      SubProgress prepProgress(progress, 0.4 * static_cast<double>(piece.begin) / total,
+                               0.4 * static_cast<double>(piece.end) / total, "path preparation");
+      Trajectory source = subTrajectory(planned, piece);
+      source.extra.erase(kDwellChannel);  // the waits are laid out as lifts, never smoothed
+      const PreparedTrajectory prepared = prepareTrajectory(source, job.prep, prepProgress);
+      if (!prepared.trajectory.empty()) {
+        const TrajectoryPoint& start = prepared.trajectory.points.front();
+        const double startWait = q == 0 ? dwellAt(planned, piece.begin) : 0.0;
+        if (q > 0) {
+          appendTrajectory(program,
+                           dwellLift(program.points.back(), dwellAt(planned, piece.begin), job.prep));
+        } else if (!program.empty()) {
+          Trajectory travel = travelBetween(program.points.back(), start, zSafe, job.prep);
+          addWait(travel, 0, pendingWait);
+          addWait(travel, travel.size() - 1, startWait);
+          appendTrajectory(program, travel);
+        } else if (startWait > 0.0) {
+          appendTrajectory(program, dwellLift(start, startWait, job.prep));
+        }
+      }
+      colliding.resize(program.size(), false);
+      for (double at : prepared.sourceParam) {
+        // A target between two planned points collides when either does.
+        const size_t lo = piece.begin + static_cast<size_t>(std::floor(at));
+        const size_t hi = std::min(piece.begin + static_cast<size_t>(std::ceil(at)), piece.end - 1);
+        colliding.push_back(!job.plannedCollision.empty() &&
+                            (job.plannedCollision[lo] || job.plannedCollision[hi]));
+      }
+      appendTrajectory(program, prepared.trajectory);
+      mergeReport(out.prep, prepared.report, first);
+      first = false;
     }
-    appendTrajectory(program, prepared.trajectory);
-    mergeReport(out.prep, prepared.report, r == 0);
+    pendingWait = ranges[r].size() > 1 ? dwellAt(planned, ranges[r].end - 1) : 0.0;
+  }
+  if (pendingWait > 0.0 && !program.empty()) {
+    appendTrajectory(program, dwellLift(program.points.back(), pendingWait, job.prep));
+    colliding.resize(program.size(), false);
   }
   if (job.prep.leadWireFeed) leadWireFeed(program, job.prep.wireFeedLag);
   out.robotTargets = program.size();

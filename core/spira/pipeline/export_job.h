@@ -34,6 +34,7 @@ struct ExportOutcome {
   size_t robotTargets = 0;  // points written
   size_t unreachableTargets = 0;
   size_t subPaths = 1;  // sub-paths of the plan: one arc start and stop each
+  size_t dwells = 0;    // dwells of the plan (path/dwell.h): each one lift, one wait, one more arc start
   double seconds = 0.0;
 };
 
@@ -42,6 +43,10 @@ struct ExportOutcome {
 // files or none). A plan with several sub-paths (the `path` channel of a multi-branch part) is
 // prepared and solved sub-path by sub-path and written with one arc start and stop each and a
 // retract, travel and approach between them at job.prep.travelClearance above the plan, arc off.
+// A dwell (path/dwell.h) cuts its sub-path in two pieces prepared on their own; between them the
+// torch lifts job.prep.travelClearance along its axis, waits there with the arc off (the program
+// point carries the wait in the dwell channel) and comes back to the same point to strike again. A
+// dwell at a sub-path's first or last point waits on the travel's approach or retract instead.
 // With job.prep.leadWireFeed the wire-feed setpoints are led by the feeder's lag (the
 // kWfsCommandChannel / kWfsLeadChannel channels of export_path.h). Throws InputError for unknown
 // exporters or bad parameters; an exporter refuses unreachable or colliding targets unless its

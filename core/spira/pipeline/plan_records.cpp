@@ -188,6 +188,10 @@ SpiralStageReport spiralStageReport(const PlanOutput& plan, const std::string& s
   r.maxJump = s.maxJump;
   r.seamRiseMax = s.seamRiseMax;
   r.buildTime = plan.process.buildTime;
+  if (plan.process.dwells > 0) {
+    r.dwells = static_cast<std::int64_t>(plan.process.dwells);
+    r.dwellTime = plan.process.dwellTime;
+  }
   r.timings = secondsOf(plan.timings, true);
   r.warnings = plan.warnings;
   r.pathCount = plan.paths.empty() ? 1 : static_cast<std::int64_t>(plan.paths.size());

@@ -102,6 +102,8 @@ void addProcessReport(ProcessReport& total, const ProcessReport& part, size_t of
     total.violations.clear();
   } else {
     total.buildTime += part.buildTime;
+    total.dwells += part.dwells;
+    total.dwellTime += part.dwellTime;
     total.wireLength += part.wireLength;
     total.depositVolume += part.depositVolume;
     total.travelSpeedMin = std::min(total.travelSpeedMin, part.travelSpeedMin);

@@ -3,6 +3,7 @@
 #include <nlohmann/json.hpp>
 
 #include "spira/base/number_text.h"
+#include "spira/path/dwell.h"
 
 namespace spira {
 namespace {
@@ -21,7 +22,10 @@ constexpr double kMmPerSecondToMetresPerMinute = 60.0 / 1000.0;
 
 std::string trajectoryCsv(const Trajectory& trajectory)
 {
-  std::string out = "index,x,y,z,nx,ny,nz,tx,ty,tz,bx,by,bz,rev,gen,height,ts,wfs,arc,path\n";
+  // The dwell column only when a dwell is planned: plans without one keep the file they always had.
+  const bool dwell = hasDwell(trajectory);
+  std::string out = "index,x,y,z,nx,ny,nz,tx,ty,tz,bx,by,bz,rev,gen,height,ts,wfs,arc,path";
+  out += dwell ? ",dwell_s\n" : "\n";
   out.reserve(out.size() + trajectory.size() * 224);
   for (size_t i = 0; i < trajectory.size(); ++i) {
     const TrajectoryPoint& p = trajectory.points[i];
@@ -42,6 +46,10 @@ std::string trajectoryCsv(const Trajectory& trajectory)
     appendNumber(out, p.wireFeed * kMmPerSecondToMetresPerMinute);
     out += p.arcOn ? ",1," : ",0,";
     appendNumber(out, static_cast<long long>(p.path));
+    if (dwell) {
+      out += ',';
+      appendNumber(out, dwellAt(trajectory, i));
+    }
     out += '\n';
   }
   return out;

@@ -6,18 +6,32 @@
 #include "spira/base/atomic_file.h"
 #include "spira/base/error.h"
 #include "spira/base/number_text.h"
+#include "spira/path/dwell.h"
 
 namespace spira {
 namespace {
 
 constexpr const char* kHeader = "index,x,y,z,nx,ny,nz,tx,ty,tz,bx,by,bz,rev,gen,height,ts,wfs,arc,path";
+// Plans with a dwell (path/dwell.h) carry one more column.
+constexpr const char* kDwellHeader =
+    "index,x,y,z,nx,ny,nz,tx,ty,tz,bx,by,bz,rev,gen,height,ts,wfs,arc,path,dwell_s";
 // Plans written before multi-branch parts had no path column: one path.
 constexpr const char* kSinglePathHeader = "index,x,y,z,nx,ny,nz,tx,ty,tz,bx,by,bz,rev,gen,height,ts,wfs,arc";
-constexpr int kMaxColumns = 20;
-constexpr const char* kColumnNames[kMaxColumns] = {"index", "x",      "y",  "z",   "nx",  "ny",  "nz",
-                                                   "tx",    "ty",     "tz", "bx",  "by",  "bz",  "rev",
-                                                   "gen",   "height", "ts", "wfs", "arc", "path"};
-enum Column { kIndex = 0, kRev = 13, kGen = 14, kHeight = 15, kTs = 16, kWfs = 17, kArc = 18, kPath = 19 };
+constexpr int kMaxColumns = 21;
+constexpr const char* kColumnNames[kMaxColumns] = {"index", "x",      "y",  "z",   "nx",  "ny",   "nz",
+                                                   "tx",    "ty",     "tz", "bx",  "by",  "bz",   "rev",
+                                                   "gen",   "height", "ts", "wfs", "arc", "path", "dwell_s"};
+enum Column {
+  kIndex = 0,
+  kRev = 13,
+  kGen = 14,
+  kHeight = 15,
+  kTs = 16,
+  kWfs = 17,
+  kArc = 18,
+  kPath = 19,
+  kDwell = 20
+};
 
 bool whole(double x)
 {
@@ -30,7 +44,7 @@ Trajectory trajectoryFromCsv(const std::string& text, const std::string& what)
 {
   Trajectory t;
   size_t pos = 0, lineNo = 0;
-  int columns = kMaxColumns;
+  int columns = kMaxColumns - 1;
   const auto fail = [&](const std::string& problem) -> void {
     throw InputError(what + " line " + std::to_string(lineNo) + ": " + problem,
                      "use the trajectory.csv that 'spira-cli plan' wrote, unedited");
@@ -47,7 +61,9 @@ Trajectory trajectoryFromCsv(const std::string& text, const std::string& what)
     if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
     if (lineNo == 1) {
       if (line == kSinglePathHeader)
-        columns = kMaxColumns - 1;
+        columns = kMaxColumns - 2;
+      else if (line == kDwellHeader)
+        columns = kMaxColumns;
       else if (line != kHeader)
         fail("the header is not '" + std::string(kHeader) + "'");
       continue;
@@ -92,6 +108,11 @@ Trajectory trajectoryFromCsv(const std::string& text, const std::string& what)
                                             : "must not be negative") +
                        ", found " + significantText(v[kWfs], 6));
     if (v[kHeight] < 0) failAt(kHeight, "must not be negative, found " + significantText(v[kHeight], 6));
+    if (v[kDwell] < 0) failAt(kDwell, "must be a wait in s from 0, found " + significantText(v[kDwell], 6));
+    // The torch arrives at a dwell depositing; it stops the arc there, so there must be one to stop.
+    if (v[kDwell] > 0 && v[kArc] != 1)
+      failAt(kDwell, "must be 0 where the arc is off (a dwell stops the arc), found " +
+                         significantText(v[kDwell], 6));
     TrajectoryPoint p;
     p.position = Vec3(v[1], v[2], v[3]);
     p.normal = Vec3(v[4], v[5], v[6]);
@@ -105,8 +126,11 @@ Trajectory trajectoryFromCsv(const std::string& text, const std::string& what)
     p.arcOn = v[18] != 0.0;
     p.path = static_cast<int>(v[19]);
     t.points.push_back(p);
+    if (columns == kMaxColumns) t.extra[kDwellChannel].push_back(v[kDwell]);
   }
   if (lineNo == 0) fail("the file is empty");
+  // As trajectoryCsv writes the column: a column of zeros plans no dwell, so it reads as none.
+  if (!hasDwell(t)) t.extra.erase(kDwellChannel);
   return t;
 }
 
