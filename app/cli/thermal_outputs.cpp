@@ -4,6 +4,7 @@
 #include <iostream>
 
 #include "spira/base/number_text.h"
+#include "spira/path/dwell.h"
 #include "spira/pipeline/thermal_stage.h"
 
 namespace spira::cli {
@@ -151,6 +152,10 @@ nlohmann::json replannedReport(nlohmann::json report, const ThermalReplanOutcome
   if (report.contains("path_length")) report["path_length"] = o.trajectory.length();
   if (report.contains("build_time_s"))
     report["build_time_s"] = report["build_time_s"].get<double>() + o.buildTimeAdded;
+  if (const DwellTotals dwells = dwellTotals(o.trajectory); dwells.count > 0) {
+    report["n_dwells"] = dwells.count;
+    report["dwell_time_s"] = dwells.seconds;
+  }
   if (report.contains("process") && report["process"].is_object()) {
     nlohmann::json& p = report["process"];
     p["ts_min_mm_s"] = tsMin;

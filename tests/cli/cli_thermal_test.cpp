@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli_runner.h"
+#include "spira/path/dwell.h"
 #include "spira/planning/trajectory_csv_reader.h"
 #include "support/test_support.h"
 
@@ -265,6 +266,54 @@ TEST_F(CliThermal, ReplansToAnInterpassLimit)
     EXPECT_EQ(r.exitCode, bad.back() == "0" ? 3 : 2) << bad[1] << ": " << r.err;
     EXPECT_NE(r.err.find(bad.size() == 2 ? "--remedy " : "--max-dwell "), std::string::npos) << r.err;
   }
+}
+
+// Re-planned with dwells: the plan folder written carries them in trajectory.csv's dwell_s column
+// and report.json, simulated again on its own it meets the limit, and the robot program exported
+// from it stops the arc, waits and strikes again once per dwell.
+TEST_F(CliThermal, DwellsReachTheRobotProgram)
+{
+  const fs::path plain = tmp_ / "plain", out = tmp_ / "dwelled";
+  ASSERT_EQ(runCli({"thermal", plan().string(), "-o", plain.string(), "--frames", "0"}).exitCode, 0);
+  const double limit = 20.0 + 0.8 * (thermal(plain).at("max_interpass_C").get<double>() - 20.0);
+  CliRun r = runCli({"thermal", plan().string(), "-o", out.string(), "--interpass-max", std::to_string(limit),
+                     "--remedy", "dwell", "--max-dwell", "300", "--frames", "0"});
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const nlohmann::json j = thermal(out).at("replan");
+  EXPECT_EQ(j.at("limit_met"), true);
+  EXPECT_EQ(j.at("applied"), nlohmann::json::array({"dwell"}));
+  const long long dwells = j.at("dwells").get<long long>();
+  ASSERT_GT(dwells, 0);
+  EXPECT_EQ(j.at("arc_starts_added"), dwells);
+  EXPECT_NE(r.out.find(std::to_string(dwells) + " dwell(s)"), std::string::npos) << r.out;
+
+  const Trajectory written = readTrajectoryCsv(out / "trajectory.csv");
+  const DwellTotals totals = dwellTotals(written);
+  EXPECT_EQ(totals.count, dwells);
+  EXPECT_NEAR(totals.seconds, j.at("dwell_time_s").get<double>(), 1e-6 * totals.seconds);
+  const nlohmann::json report = nlohmann::json::parse(readBytes(out / "report.json"));
+  EXPECT_EQ(report.at("n_dwells"), dwells);
+  EXPECT_NEAR(report.at("build_time_s").get<double>(),
+              nlohmann::json::parse(readBytes(plan() / "report.json")).at("build_time_s").get<double>() +
+                  totals.seconds,
+              1e-3);
+
+  // Simulated again from the folder alone, at the power per unit wire the re-planning used.
+  const fs::path again = tmp_ / "again";
+  r = runCli({"thermal", out.string(), "-o", again.string(), "--frames", "0", "--interpass-max",
+              std::to_string(limit), "--remedy", "dwell"});
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_EQ(thermal(again).at("replan").at("re_simulations"), 0);
+
+  const fs::path krl = tmp_ / "krl";
+  r = runCli({"export", out.string(), "--format", "krl", "-o", krl.string()});
+  ASSERT_EQ(r.exitCode, 0) << r.err << r.out;
+  std::string src;
+  for (const auto& f : fs::directory_iterator(krl))
+    if (f.path().extension() == ".src") src += readBytes(f.path());
+  size_t waits = 0;
+  for (size_t at = src.find("WAIT SEC"); at != std::string::npos; at = src.find("WAIT SEC", at + 1)) ++waits;
+  EXPECT_EQ(waits, size_t(dwells));
 }
 
 // A part file is planned as 'plan' plans it (same flags, same path) and simulated; the plan is
