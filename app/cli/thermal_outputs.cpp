@@ -111,6 +111,7 @@ nlohmann::json replanJson(const ThermalReplanOutcome& o, const ThermalReplanSett
       {"arc_starts_added", o.dwells},
       {"build_time_added_s", o.buildTimeAdded},
       {"re_simulations", o.rounds},
+      {"planned_max_interpass_C", o.plannedWorst},
       {"final_max_interpass_C", thermalStageReportOf(final, ThermalStudySettings{}, 0.0).maxInterpass}};
   if (!o.why.empty()) j["why_not_met"] = o.why;
   return j;

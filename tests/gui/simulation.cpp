@@ -31,6 +31,7 @@
 #include "spira/base/units.h"
 #include "spira/document/document.h"
 #include "spira/document/kinematics_result.h"
+#include "spira/path/dwell.h"
 #include "spira/ui/panels/cell_panel.h"
 #include "spira/ui/panels/display_panel.h"
 #include "spira/ui/panels/simulation_clock.h"
@@ -265,6 +266,19 @@ TEST(Simulation, ClockRunsTheSegmentsAtTheirTravelSpeeds)
   EXPECT_EQ(clock.indexAt(2.0), 1u);
   EXPECT_EQ(clock.indexAt(9.3), 5u);
   EXPECT_EQ(clock.indexAt(1e9), 6u);
+}
+
+// A dwell holds the torch at its point: everything after it comes that much later, as the thermal
+// model times the build.
+TEST(Simulation, ClockWaitsAtADwell)
+{
+  Trajectory path = straightPath();
+  path.extra[kDwellChannel].assign(path.size(), 0.0);
+  path.extra[kDwellChannel][2] = 30.0;
+  const ui::SimulationClock plain(straightPath(), 8.0), waiting(path, 8.0);
+  for (size_t i = 0; i < path.size(); ++i)
+    EXPECT_DOUBLE_EQ(waiting.time(i), plain.time(i) + (i > 2 ? 30.0 : 0.0)) << i;
+  EXPECT_EQ(waiting.indexAt(plain.time(2) + 29.0), 2u);
 }
 
 TEST(Simulation, BeadGrowsAndCollisionsShowWhereTheyHappen)

@@ -71,6 +71,7 @@ class Replanner {
     c.study = runThermalStudy(c.trajectory, settings_, first);
     measure(c);
     plannedTime_ = c.study.mesh.buildTime();
+    plannedWorst_ = c.worst;
     best_ = c;
     current_ = std::move(c);
   }
@@ -95,6 +96,7 @@ class Replanner {
     out.dwells = c.dwells;
     out.dwellTime = c.dwellTime;
     out.buildTimeAdded = c.study.mesh.buildTime() - plannedTime_;
+    out.plannedWorst = plannedWorst_;
     if (!out.limitMet) {
       for (const std::string& note : notes_) out.why += (out.why.empty() ? "" : "; ") + note;
       if (out.why.empty())
@@ -174,7 +176,7 @@ class Replanner {
   const double ambient_, limit_;
   Candidate current_, best_;
   int rounds_ = 0;
-  double plannedTime_ = 0.0;
+  double plannedTime_ = 0.0, plannedWorst_ = 0.0;
   std::vector<std::string> notes_;
 };
 

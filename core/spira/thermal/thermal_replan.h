@@ -44,6 +44,7 @@ struct ThermalReplanOutcome {
   int dwells = 0;                    // dwell: stops added (each one more arc start)
   double dwellTime = 0.0;            // dwell: their waits summed, s
   double buildTimeAdded = 0.0;       // s
+  double plannedWorst = 0.0;         // C: the planned path's highest interpass temperature
   std::string why;                   // when the limit is not met: what stopped the re-planning
 };
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "spira/path/dwell.h"
 #include "spira/path/trajectory.h"
 
 namespace spira::ui {
@@ -14,7 +15,7 @@ SimulationClock::SimulationClock(const Trajectory& path, double fallbackSpeed)
     if (i > 0) {
       const TrajectoryPoint& p = path.points[i];
       const double speed = p.travelSpeed > 0.0 ? p.travelSpeed : fallbackSpeed;
-      t += (p.position - path.points[i - 1].position).norm() / speed;
+      t += dwellAt(path, i - 1) + (p.position - path.points[i - 1].position).norm() / speed;
     }
     times_.push_back(t);
   }

@@ -11,7 +11,8 @@ namespace spira::ui {
 
 // The time line of a planned path: point i is reached at time(i) (s) when the torch runs each
 // segment at the travel speed of its end point (the process channel), or at `fallbackSpeed`
-// (mm/s) where the path has no speed. Simulation playback maps wall-clock time through it.
+// (mm/s) where the path has no speed. A dwell (path/dwell.h) holds the torch at its point for its wait
+// before the next segment. Simulation playback maps wall-clock time through it.
 class SimulationClock {
  public:
   explicit SimulationClock(const Trajectory& path, double fallbackSpeed = 8.0);
