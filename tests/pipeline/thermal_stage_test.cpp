@@ -10,6 +10,7 @@
 #include "spira/base/error.h"
 #include "spira/base/progress.h"
 #include "spira/document/document.h"
+#include "spira/document/plan_report.h"
 #include "spira/mesh/mesh_primitives.h"
 #include "spira/path/dwell.h"
 #include "spira/pipeline/document_plan.h"
@@ -256,6 +257,45 @@ TEST(ThermalStage, DwellsBeforeTheHotRevolutionsWhenOnlyDwellIsChosen)
   EXPECT_TRUE(hasDwell(waiting));
   EXPECT_EQ(*plannedPathOf(plan.results).trajectory, waiting);
   EXPECT_EQ(plan.report["thermal"]["dwells"], *rep.dwells);
+}
+
+// The deposit remedy on a path fed at a constant travel speed: the thinner band feeds less wire, so
+// less arc power at the same speed, and it cools. The thinned path is what the plan executes: the
+// deposit check judges it again, and that verdict is the plan's.
+TEST(ThermalStage, ThinnerBandIsJudgedAgainByTheDepositCheck)
+{
+  Document doc(smallWall());
+  enableThermal(doc);
+  doc.setParam(PlanSettings::kProcessSection, "process", std::string("constant-ts"));
+  doc.setParam(PlanSettings::kSpiralSection, "h_min", 1.0);
+  NullProgress progress;
+  const DocumentPlan plain = planDocument(doc.state(), builtinRegistry(), progress);
+  ASSERT_TRUE(plain.feasible);
+  ASSERT_TRUE(plain.results.reports.thermal);
+  const double limit = 20.0 + 0.85 * (plain.results.reports.thermal->maxInterpass - 20.0);
+  doc.setParam(PlanSettings::kThermalSection, "interpass_max", limit);
+  doc.setParam(PlanSettings::kThermalSection, "remedy_deposit", true);
+  const DocumentPlan plan = planDocument(doc.state(), builtinRegistry(), progress);
+  ASSERT_TRUE(plan.results.thermal && plan.results.reports.thermal);
+  const ThermalStageReport& rep = *plan.results.reports.thermal;
+  EXPECT_TRUE(rep.limitMet.value_or(false)) << rep.whyNotMet.value_or("");
+  EXPECT_EQ(rep.remediesApplied, std::vector<std::string>{"deposit"});
+  ASSERT_GT(rep.revolutionsAdded.value_or(0), 0);
+  ASSERT_TRUE(plan.results.thermal->replanned);
+  const Trajectory& thinned = *plan.results.thermal->replanned;
+  size_t perRevolution = 0;
+  for (const TrajectoryPoint& p : plan.results.process->points) perRevolution += p.revolution == 1;
+  EXPECT_EQ(thinned.size(), plan.results.process->size() + size_t(*rep.revolutionsAdded) * perRevolution);
+  ASSERT_TRUE(rep.depositCheck.has_value());
+  EXPECT_TRUE(rep.depositCheck->feasible) << rep.depositCheck->summary;
+  EXPECT_GE(rep.depositCheck->heightMin, 1.0 - 0.01);
+  EXPECT_LT(rep.depositCheck->heightMean, plain.results.reports.spiral->depositCheck.heightMean - 0.05);
+  EXPECT_TRUE(plan.feasible);
+  EXPECT_EQ(plan.report["deposit_check"]["points_checked"], rep.depositCheck->pointsChecked);
+  EXPECT_EQ(plan.report["feasible"], true);
+  const std::optional<PlanReportSummary> summary = planSummaryOf(plan.results);
+  ASSERT_TRUE(summary);
+  EXPECT_EQ(summary->depositHeightMin, rep.depositCheck->heightMin);
 }
 
 }  // namespace

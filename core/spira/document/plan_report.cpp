@@ -23,6 +23,24 @@ nlohmann::json parsePlanReport(const std::string& text, const std::string& what)
   return report;
 }
 
+namespace {
+
+void takeDepositCheck(PlanReportSummary& s, const DepositCheckRecord& check)
+{
+  s.depositSummary = check.summary;
+  s.depositChecked = true;
+  s.depositHeightMin = check.heightMin;
+  s.depositHeightMax = check.heightMax;
+  s.flagged = check.flagged;
+  s.uncoveredFraction = check.coverage ? check.coverage->uncoveredFraction : 0.0;
+  s.flaggedPoints.clear();
+  for (const DepositFlagRecord& f : check.flaggedPoints)
+    s.flaggedPoints.push_back({static_cast<std::size_t>(std::max<std::int64_t>(0, f.point)), f.kind,
+                               std::isfinite(f.height) ? std::optional<double>(f.height) : std::nullopt});
+}
+
+}  // namespace
+
 PlanReportSummary summaryOf(const SpiralStageReport& r, const ProcessStageReport* process,
                             const MotionStageReport* motion)
 {
@@ -34,16 +52,7 @@ PlanReportSummary summaryOf(const SpiralStageReport& r, const ProcessStageReport
   s.heightMax = r.heightMax;
   s.pathLength = r.pathLength;
   s.feasible = r.feasible;
-  const DepositCheckRecord& check = r.depositCheck;
-  s.depositSummary = check.summary;
-  s.depositChecked = true;
-  s.depositHeightMin = check.heightMin;
-  s.depositHeightMax = check.heightMax;
-  s.flagged = check.flagged;
-  if (check.coverage) s.uncoveredFraction = check.coverage->uncoveredFraction;
-  for (const DepositFlagRecord& f : check.flaggedPoints)
-    s.flaggedPoints.push_back({static_cast<std::size_t>(std::max<std::int64_t>(0, f.point)), f.kind,
-                               std::isfinite(f.height) ? std::optional<double>(f.height) : std::nullopt});
+  takeDepositCheck(s, r.depositCheck);
   s.points = r.points;
   s.collapsedRevolutions = r.collapsedRevolutions;
   s.closed = r.closurePoint.has_value();
@@ -81,6 +90,10 @@ nlohmann::json mergedPlanReport(const Results& results)
   nlohmann::json report = reportToJson(*reports.spiral);
   if (reports.process) report["process"] = reportToJson(*reports.process);
   if (reports.thermal) report["thermal"] = reportToJson(*reports.thermal);
+  if (reports.thermal && reports.thermal->depositCheck) {
+    report["deposit_check"] = reportToJson(*reports.thermal->depositCheck);
+    report["feasible"] = reports.spiral->feasible && reports.thermal->depositCheck->feasible;
+  }
   if (const auto& kinematics = reports.kinematics) {
     const nlohmann::json motion = reportToJson(kinematics->motion);
     for (const auto& [key, value] : motion.items()) report[key] = value;
@@ -95,8 +108,13 @@ std::optional<PlanReportSummary> planSummaryOf(const Results& results)
 {
   const StageReports& reports = results.reports;
   if (!reports.spiral) return std::nullopt;
-  return summaryOf(*reports.spiral, reports.process.get(),
-                   reports.kinematics ? &reports.kinematics->motion : nullptr);
+  PlanReportSummary s = summaryOf(*reports.spiral, reports.process.get(),
+                                  reports.kinematics ? &reports.kinematics->motion : nullptr);
+  if (reports.thermal && reports.thermal->depositCheck) {
+    s.feasible = s.feasible && reports.thermal->depositCheck->feasible;
+    takeDepositCheck(s, *reports.thermal->depositCheck);
+  }
+  return s;
 }
 
 std::optional<PlanWindow> planWindow(const Results& results)

@@ -287,6 +287,9 @@ struct ThermalStageReport {
   std::optional<std::int64_t> dwells;                       // each one more arc start
   std::optional<double> dwellTime;                          // s
   std::optional<std::string> whyNotMet;
+  // The re-planned path judged again when the re-planning changed its geometry (the deposit remedy):
+  // it is the path the plan executes, so its verdict is the plan's.
+  std::optional<DepositCheckRecord> depositCheck;
   SecondsPerStep timings;  // mesh, simulation, solver
   template <class S, class Io>
   static void fields(S& s, Io& io)
@@ -301,7 +304,8 @@ struct ThermalStageReport {
     io.optional("limit_met", s.limitMet), io.optional("revolutions_added", s.revolutionsAdded);
     io.optional("build_time_added_s", s.buildTimeAdded), io.optional("remedies_applied", s.remediesApplied);
     io.optional("dwells", s.dwells), io.optional("dwell_time_s", s.dwellTime);
-    io.optional("why_not_met", s.whyNotMet), io("timings_s", s.timings);
+    io.optional("why_not_met", s.whyNotMet), io.optional("deposit_check", s.depositCheck);
+    io("timings_s", s.timings);
   }
 };
 

@@ -74,21 +74,24 @@ ThinningResult thinRevolutions(const Trajectory& planned, const ThinningZone& zo
   for (int s = 1; s <= steps; ++s)
     for (size_t k = 0; k < q; ++k)
       climbed[size_t(s)][k] = climbed[size_t(s) - 1][k] + at(zone.first + s, k).height;
-  const auto climbAt = [&](double level, size_t k) {
-    const int s = std::min(int(std::floor(level)), steps - 1);
-    return climbed[size_t(s)][k] + (level - s) * (climbed[size_t(s) + 1][k] - climbed[size_t(s)][k]);
+  // Where generatrix k has climbed `c` of its band: the planned step s holding it and how far into it.
+  const auto locate = [&](double c, size_t k) {
+    int s = 0;
+    while (s + 1 < steps && climbed[size_t(s) + 1][k] < c) ++s;
+    const double step = climbed[size_t(s) + 1][k] - climbed[size_t(s)][k];
+    return std::pair{s, step > 0.0 ? std::clamp((c - climbed[size_t(s)][k]) / step, 0.0, 1.0) : 1.0};
   };
-
   Trajectory& t = out.trajectory;
   const size_t keepEnd = runs[zone.first].end, resume = runs[zone.last].end;
   t.points.assign(planned.points.begin(), planned.points.begin() + long(keepEnd));
   for (const auto& [name, values] : planned.extra)
     t.extra[name].assign(values.begin(), values.begin() + long(keepEnd));
   for (int j = 1; j <= count; ++j) {
-    const double level = j * out.ratio, below = (j - 1) * out.ratio;
-    const int s = std::min(int(std::floor(level + 1e-9)), steps - 1);
-    const double w = std::clamp(level - s, 0.0, 1.0);
     for (size_t k = 0; k < q; ++k) {
+      // Each generatrix lays its band in equal layers: the ramps that level the band's ends are
+      // spread over it rather than thinned further.
+      const double layer = climbed[size_t(steps)][k] / count;
+      const auto [s, w] = j == count ? std::pair{steps - 1, 1.0} : locate(j * layer, k);
       const TrajectoryPoint& a = at(zone.first + s, k);
       const TrajectoryPoint& b = at(zone.first + s + 1, k);
       TrajectoryPoint p = b;
@@ -99,7 +102,7 @@ ThinningResult thinRevolutions(const Trajectory& planned, const ThinningZone& zo
       p.tangent = across.norm() > 1e-12 ? Vec3(across.normalized()) : b.tangent;
       p.build = p.normal.cross(p.tangent).normalized();
       p.revolution = zone.first + j;
-      p.height = climbAt(level, k) - climbAt(below, k);
+      p.height = layer;
       // The planned step this point falls in sets the cross-section it scales.
       const double scale = b.height > 0.0 ? p.height / b.height : 1.0;
       if (synergic)

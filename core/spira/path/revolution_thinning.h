@@ -21,14 +21,14 @@ struct ThinningResult {
 };
 
 // The source's remedy for a zone that overheats (000_dbb97c2716e10cc3.txt §5.6.4): the same band of
-// the part laid with more, thinner revolutions. Revolution j of the band takes every generatrix
-// (a point's place in its revolution) to the level first + j (last - first) / n' between the planned
-// revolutions on that generatrix, n' = ceil((last - first) / ratio), so the band still ends on the
-// planned revolution `last` and the rest of the path is unchanged. A point's deposit height is the
-// planned heights swept between its level and the one below; the bead's cross-section follows it as
-// WFS / TS (the process model's own assumption, process_model.h): on a path fed at one wire speed
-// (synergic) the travel speed rises, otherwise the wire feed drops. Frames and extra channels are
-// interpolated between the planned revolutions.
+// the part laid with more, thinner revolutions. The band's n = last - first planned steps become
+// n' = ceil(n / ratio) revolutions, and each generatrix (a point's place in its revolution) lays its
+// band's deposit in n' equal layers: revolution j sits where that generatrix has climbed j / n' of it,
+// between the planned revolutions. So the band ends on the planned revolution `last`, the rest of the
+// path is unchanged, and ramps inside the band (those that level an upper edge) are spread over it.
+// The bead's cross-section follows the new height as WFS / TS (the process model's own assumption,
+// process_model.h): on a path fed at one wire speed (synergic) the travel speed rises, otherwise the
+// wire feed drops. Frames and extra channels are interpolated between the planned revolutions.
 // The band's revolutions must have the same number of points (a closed part's last revolution, its
 // closure point alone, cannot be in it). Throws InputError when the band does not exist, is shorter
 // than one revolution or mixes revolution lengths.

@@ -154,6 +154,18 @@ DocumentPlan planDocument(const DocumentState& snapshot, const PluginRegistry& r
     ThermalStageOutput heat = runThermalStage(
         *r.process, thermal, processSettingsFrom(settings.section(PlanSettings::kProcessSection)),
         thermalProgress);
+    if (heat.result->replanned && heat.report->revolutionsAdded.value_or(0) > 0) {
+      Trajectory thinned = *heat.result->replanned;
+      if (!frame.identity()) frame.toBuild(thinned);
+      NullProgress quiet;
+      const DepositCheckReport check =
+          checkPlannedDeposits(registry, request, thinned, !plan.solid.has_value(), quiet);
+      ThermalStageReport judged = *heat.report;
+      judged.depositCheck = depositCheckRecord(check);
+      heat.report = std::make_shared<const ThermalStageReport>(std::move(judged));
+      out.feasible = out.feasible && check.feasible;
+      out.depositSummary = check.summary();
+    }
     r.setThermal(std::move(heat.result), std::move(heat.report));
   }
   const Trajectory& motionPath = r.thermal && r.thermal->replanned ? *r.thermal->replanned : *r.process;

@@ -301,4 +301,12 @@ PlanOutput planPart(const PluginRegistry& registry, const PlanRequest& request, 
   return out;
 }
 
+DepositCheckReport checkPlannedDeposits(const PluginRegistry& registry, const PlanRequest& request,
+                                        const Trajectory& path, bool againstSurface, Progress& progress)
+{
+  const Settings settings = settingsFor(registry, request);
+  return checkDeposits(path, againstSurface ? &request.mesh : nullptr, depositSettings(request, settings),
+                       progress);
+}
+
 }  // namespace spira

@@ -122,4 +122,10 @@ PlanOutput planPart(const PluginRegistry& registry, const PlanRequest& request, 
 // that does not branch and on each sub-part of one that does.
 PlanOutput planMonoBranch(const PluginRegistry& registry, const PlanRequest& request, Progress& progress);
 
+// The deposit check the plan ends with, on a path changed after planning (a thermal re-planning's
+// thinner band), in the request's frame: its window, bead width and substrate, its surface when
+// `againstSurface` (not for a solid, planned on its mid-surface).
+DepositCheckReport checkPlannedDeposits(const PluginRegistry& registry, const PlanRequest& request,
+                                        const Trajectory& path, bool againstSurface, Progress& progress);
+
 }  // namespace spira

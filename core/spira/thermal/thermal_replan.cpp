@@ -211,12 +211,17 @@ void Replanner::deposit()
       it = zones.erase(it);
       continue;
     }
+    // Each generatrix lays the band in equal layers (revolution_thinning.h): its mean height may
+    // thin down to h_min.
+    std::map<int, double> band;  // per generatrix: the band's deposit
     for (const TrajectoryPoint& p : base.trajectory.points) {
-      if (p.path != z.path || p.revolution <= z.first || p.revolution > z.last || !(p.height > 0.0)) continue;
-      floor = std::max(floor, replan_.hMin / p.height);
+      if (p.path != z.path || p.revolution <= z.first || p.revolution > z.last) continue;
+      band[p.generatrix] += p.height;
       floor = std::max(floor, synergic ? p.travelSpeed / replan_.limits.travelSpeedMax
                                        : replan_.limits.wireFeedMin / p.wireFeed);
     }
+    for (const auto& [generatrix, height] : band)
+      floor = std::max(floor, height > 0.0 ? replan_.hMin * (z.last - z.first) / height : 1.0);
     ++it;
   }
   if (zones.empty()) {
