@@ -233,34 +233,40 @@ void Replanner::deposit()
          " mm) or the process's speed limits");
     return;
   }
+  int widest = 0;
+  for (const auto& [path, zone] : zones) widest = std::max(widest, zone.last - zone.first);
   double ratio = 1.0;
   while (!met() && roundLeft()) {
     double hot = ambient_;
     for (const auto& [key, t] : current_.hottest)
       if (zones.count(key.first)) hot = std::max(hot, t);
-    const double next = std::max(floor, ratio * stepFor(hot));
-    if (next >= ratio - 1e-9) {
+    // A whole number of revolutions fills each band: at least one more in the widest one, or the
+    // round would simulate the same path again.
+    const int laid = int(std::ceil(widest / ratio - 1e-9));
+    const double next = std::min(std::max(floor, ratio * stepFor(hot)), double(widest) / (laid + 1));
+    if (next < floor - 1e-12) {
       note("the thinned band is at the window's h_min (" + significantText(replan_.hMin, 4) +
            " mm) or the process's speed limits");
       break;
     }
     Candidate c = base;
-    double laid = 1.0;
+    double thinnest = 1.0;
     for (const auto& [path, zone] : zones) {
       ThinningZone z = zone;
       z.ratio = next;
       ThinningResult thin = thinRevolutions(c.trajectory, z);
       c.trajectory = std::move(thin.trajectory);
       c.revolutionsAdded += thin.revolutionsAdded;
-      laid = std::min(laid, thin.ratio);
+      thinnest = std::min(thinnest, thin.ratio);
     }
-    c.thinnestRatio = laid;
+    c.thinnestRatio = thinnest;
     const double before = current_.worst;
     simulate(std::move(c), "deposit");
     ratio = next;
     if (current_.worst > before - kProgress) {
-      note("thinner, faster revolutions did not lower the interpass temperature (" +
-           significantText(before, 4) + " C before, " + significantText(current_.worst, 4) + " C after)");
+      note(std::string(synergic ? "thinner, faster revolutions" : "thinner revolutions fed less wire") +
+           " did not lower the interpass temperature (" + significantText(before, 4) + " C before, " +
+           significantText(current_.worst, 4) + " C after)");
       break;
     }
   }
