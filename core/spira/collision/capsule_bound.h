@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "spira/base/segment_distance.h"
 #include "spira/collision/convex_shape.h"
 
 namespace spira::bvh_detail {
@@ -22,14 +23,6 @@ struct CapsuleBound {
 };
 
 constexpr double kBoundSlack = 1e-6;  // mm
-
-inline double pointSegmentDistance(const Vec3& p, const Vec3& a, const Vec3& b)
-{
-  const Vec3 ab = b - a;
-  const double len2 = ab.squaredNorm();
-  const double t = len2 > 0.0 ? std::clamp((p - a).dot(ab) / len2, 0.0, 1.0) : 0.0;
-  return (a + t * ab - p).norm();
-}
 
 // Distance between segments [p0, p1] and [q0, q1] (Ericson, Real-Time Collision Detection 5.1.9).
 inline double segmentDistance(const Vec3& p0, const Vec3& p1, const Vec3& q0, const Vec3& q1)

@@ -1,4 +1,5 @@
 #include "spira/planning/planar_baseline.h"
+#include "spira/base/segment_distance.h"
 
 #include <algorithm>
 #include <cmath>
@@ -13,15 +14,6 @@
 namespace spira {
 
 namespace {
-
-double segmentDistance(const Vec3& p, const Vec3& a, const Vec3& b)
-{
-  const Vec3 d = b - a;
-  const double len2 = d.squaredNorm();
-  const double t = len2 > 0 ? std::clamp((p - a).dot(d) / len2, 0.0, 1.0) : 0.0;
-  const Vec3 foot = a + t * d;
-  return (p - foot).norm();
-}
 
 // The contours of one layer, with a grid over their points for nearest-point queries.
 class Layer {
@@ -56,7 +48,8 @@ class Layer {
       int k = j;
       if (closed_[static_cast<size_t>(l)]) k = (j + n) % n;
       if (k < 0 || k >= n || k == i) continue;
-      best = std::min(best, segmentDistance(p, line[static_cast<size_t>(i)], line[static_cast<size_t>(k)]));
+      best =
+          std::min(best, pointSegmentDistance(p, line[static_cast<size_t>(i)], line[static_cast<size_t>(k)]));
     }
     return best;
   }

@@ -1,4 +1,5 @@
 #include "spira/prep/smoothing.h"
+#include "spira/base/segment_distance.h"
 
 #include <algorithm>
 #include <cmath>
@@ -14,14 +15,6 @@ namespace {
 
 // Guards against a pathological interval turning into millions of samples.
 constexpr int kMaxSamplesPerInterval = 100000;
-
-double pointSegmentDistance(const Vec3& p, const Vec3& a, const Vec3& b)
-{
-  const Vec3 ab = b - a;
-  const double len2 = ab.squaredNorm();
-  const double f = len2 > 0.0 ? std::clamp((p - a).dot(ab) / len2, 0.0, 1.0) : 0.0;
-  return (p - (a + f * ab)).norm();
-}
 
 void checkParams(const PrepParams& params)
 {

@@ -1,0 +1,127 @@
+// Layers at a constant local distance on analytic tubes (004_bd0df31205c0c3c0.txt §2.3.1, the seed
+// spec's reproduction on the quarter torus): every point at delta from the layer below, fewer layers
+// than iso-v stepping, the kink growing on the lagging outer side, and plain offsets on a cylinder.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+
+#include "spira/base/error.h"
+#include "spira/contour/constant_distance.h"
+
+namespace spira {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// Eq. 2.28: the guide g(t) = (R cos t - R, 0, R sin t), a circle of radius r around it; v = 0 on the
+// outer side (farthest from the torus axis), which lags.
+TubeSurface quarterTorus(double R, double r)
+{
+  TubeSurface s;
+  s.at = [R, r](double t, double v) {
+    const Vec3 centre(R * std::cos(t) - R, 0.0, R * std::sin(t));
+    const Vec3 outward(std::cos(t), 0.0, std::sin(t));
+    return Vec3(centre + r * (std::cos(v) * outward + std::sin(v) * Vec3::UnitY()));
+  };
+  s.t0 = 0.0;
+  s.tEnd = kPi;  // the guide extended past the nominal end, pi / 2
+  return s;
+}
+
+ConstantDistanceLayers torusLayers(int points)
+{
+  ConstantDistanceSettings settings;
+  settings.delta = 5.0;
+  settings.pointsPerLayer = points;
+  return constantDistanceLayers(quarterTorus(50.0, 15.0), std::vector<double>(size_t(points), 0.0), kPi / 2,
+                                settings);
+}
+
+TEST(ConstantDistance, QuarterTorusLayersAreFiveMillimetresApartInFewerStepsThanIsoV)
+{
+  const ConstantDistanceLayers layers = torusLayers(360);
+  ASSERT_TRUE(layers.complete);
+  const int steps = int(layers.t.size()) - 1;
+  // Iso-v stepping must keep the outer side (R + r from the axis) within delta: pi/2 (R + r) / delta.
+  const int isoV = int(std::ceil(kPi / 2 * (50.0 + 15.0) / 5.0));
+  EXPECT_EQ(isoV, 21);
+  EXPECT_EQ(steps, 17);
+  double worst = 0.0;
+  for (size_t n = 1; n < layers.points.size(); ++n)
+    for (const Vec3& p : layers.points[n])
+      worst = std::max(worst, std::abs(distanceToClosedLayer(p, layers.points[n - 1], 0, 0) - 5.0));
+  EXPECT_LT(worst, 1e-3);
+  // Each point advances along its own generatrix.
+  for (size_t n = 1; n < layers.t.size(); ++n)
+    for (size_t i = 0; i < layers.t[n].size(); ++i) ASSERT_GT(layers.t[n][i], layers.t[n - 1][i]);
+  std::printf("quarter torus R 50 r 15, delta 5: %d layers (iso-v %d), worst |delta - 5| %.2e mm\n", steps,
+              isoV, worst);
+}
+
+// The wavefront shock of the seed spec's table: a few degrees on the first layers, tens of degrees
+// by layer 10, over 90 by the last, always on the outer side (v = 0).
+TEST(ConstantDistance, KinkGrowsOnTheLaggingOuterSide)
+{
+  const ConstantDistanceLayers layers = torusLayers(180);
+  ASSERT_GE(layers.points.size(), 18u);
+  std::printf("max turning angle per layer (180 points):");
+  for (size_t n = 1; n < layers.points.size(); ++n) std::printf(" %.0f", maxTurningAngle(layers.points[n]));
+  std::printf("\n");
+  for (size_t n = 1; n <= 5; ++n) EXPECT_LT(maxTurningAngle(layers.points[n]), 3.0) << n;
+  EXPECT_GT(maxTurningAngle(layers.points[10]), 20.0);
+  EXPECT_GT(maxTurningAngle(layers.points[17]), 90.0);
+  const std::vector<Vec3>& last = layers.points[17];
+  size_t at = 0;
+  double sharpest = 0.0;
+  for (size_t i = 0; i < last.size(); ++i) {
+    const Vec3 in = last[i] - last[(i + last.size() - 1) % last.size()],
+               out = last[(i + 1) % last.size()] - last[i];
+    const double angle = std::acos(std::clamp(in.normalized().dot(out.normalized()), -1.0, 1.0));
+    if (angle > sharpest) sharpest = angle, at = i;
+  }
+  EXPECT_TRUE(at <= 2 || at >= last.size() - 2) << "the kink is at point " << at;
+}
+
+// On a straight cylinder the constant-distance layers are the plain offsets t = n delta, as iso-value
+// slicing gives them.
+TEST(ConstantDistance, StraightCylinderLayersAreThePlainOffsets)
+{
+  TubeSurface cylinder;
+  cylinder.at = [](double t, double v) { return Vec3(10.0 * std::cos(v), 10.0 * std::sin(v), t); };
+  cylinder.t0 = 0.0;
+  cylinder.tEnd = 40.0;
+  ConstantDistanceSettings settings;
+  settings.delta = 2.0;
+  settings.pointsPerLayer = 90;
+  const ConstantDistanceLayers layers =
+      constantDistanceLayers(cylinder, std::vector<double>(90, 0.0), 30.0, settings);
+  ASSERT_TRUE(layers.complete);
+  ASSERT_EQ(layers.t.size(), 16u);
+  for (size_t n = 0; n < layers.t.size(); ++n)
+    for (double t : layers.t[n]) ASSERT_NEAR(t, 2.0 * double(n), 1e-5) << n;
+}
+
+TEST(ConstantDistance, StopsWhereTheSurfaceEndsAndRefusesBadInput)
+{
+  TubeSurface cylinder;
+  cylinder.at = [](double t, double v) { return Vec3(10.0 * std::cos(v), 10.0 * std::sin(v), t); };
+  cylinder.tEnd = 7.0;
+  ConstantDistanceSettings settings;
+  settings.pointsPerLayer = 36;
+  const ConstantDistanceLayers short_ =
+      constantDistanceLayers(cylinder, std::vector<double>(36, 0.0), 6.5, settings);
+  EXPECT_FALSE(short_.complete);
+  EXPECT_EQ(short_.t.size(), 4u);  // 0, 2, 4, 6: 8 lies past the surface's end
+
+  EXPECT_THROW(constantDistanceLayers(cylinder, std::vector<double>(36, 0.0), 8.0, settings), InputError);
+  EXPECT_THROW(constantDistanceLayers(cylinder, std::vector<double>(35, 0.0), 6.0, settings), InputError);
+  settings.delta = 0.0;
+  EXPECT_THROW(constantDistanceLayers(cylinder, std::vector<double>(36, 0.0), 6.0, settings), InputError);
+  settings.delta = 2.0;
+  settings.pointsPerLayer = 4;
+  EXPECT_THROW(constantDistanceLayers(cylinder, std::vector<double>(4, 0.0), 6.0, settings), InputError);
+}
+
+}  // namespace
+}  // namespace spira
