@@ -8,6 +8,7 @@
 
 #include "spira/base/error.h"
 #include "spira/contour/constant_distance.h"
+#include "spira/contour/guided_tube.h"
 
 namespace spira {
 namespace {
@@ -121,6 +122,78 @@ TEST(ConstantDistance, StopsWhereTheSurfaceEndsAndRefusesBadInput)
   settings.delta = 2.0;
   settings.pointsPerLayer = 4;
   EXPECT_THROW(constantDistanceLayers(cylinder, std::vector<double>(4, 0.0), 6.0, settings), InputError);
+}
+
+// V7, the perpendicular slicing the method replaces: planes through the torus axis every 0.100042 rad
+// put the layers 3.500 mm apart on the inner side and 6.500 mm on the outer one (+-30 %).
+TEST(ConstantDistance, PerpendicularSlicingOfTheTorusSpreadsTheDistanceThirtyPercent)
+{
+  const TubeSurface torus = quarterTorus(50.0, 15.0);
+  const int points = 720;
+  const auto layer = [&](double u) {
+    std::vector<Vec3> l;
+    for (int i = 0; i < points; ++i) l.push_back(torus.at(u, 2.0 * kPi * i / points));
+    return l;
+  };
+  const double du = 0.100042;
+  double lo = 1e300, hi = 0.0;
+  for (int n = 1; n * du <= kPi / 2; ++n) {
+    const std::vector<Vec3> below = layer((n - 1) * du), here = layer(n * du);
+    for (const Vec3& p : here) {
+      const double d = distanceToClosedLayer(p, below, 0, 0);
+      lo = std::min(lo, d), hi = std::max(hi, d);
+    }
+  }
+  EXPECT_NEAR(lo, 3.500, 2e-3);
+  EXPECT_NEAR(hi, 6.500, 2e-3);
+}
+
+// V34, the source's generalised tube (Eq. 2.29): a twisting guide 56.15 mm long, a radius waving
+// between 4 and 6 mm four times. Planned with delta 1 mm on a parallel-transported frame, every point
+// lies 1.000 mm from the layer below, up to the guide's nominal end.
+TEST(ConstantDistance, TheSourcesWavyTubeIsLaidAtOneMillimetre)
+{
+  const auto guide = [](double t) { return Vec3((0.005 * t * t * t - 0.22 * t * t) / 6.0, 0.02 * t * t, t); };
+  const auto radius = [](double t) { return 5.0 + std::cos(8.0 * kPi * t / 40.0); };
+  EXPECT_NEAR(guideLength(guide, 0.0, 40.0), 56.15, 0.01);
+  const TubeSurface tube = guidedTube(guide, radius, 0.0, 48.0);
+  ConstantDistanceSettings settings;
+  settings.delta = 1.0;
+  settings.pointsPerLayer = 180;
+  const ConstantDistanceLayers layers =
+      constantDistanceLayers(tube, std::vector<double>(180, 0.0), 40.0, settings);
+  ASSERT_TRUE(layers.complete);
+  double worst = 0.0;
+  for (size_t n = 1; n < layers.points.size(); ++n)
+    for (const Vec3& p : layers.points[n])
+      worst = std::max(worst, std::abs(distanceToClosedLayer(p, layers.points[n - 1], 0, 0) - 1.0));
+  EXPECT_LT(worst, 1e-3);
+  // Each point lies on the tube: at its radius from the guide point of its own t.
+  for (size_t i = 0; i < 180; i += 7) {
+    const double t = layers.t.back()[i];
+    EXPECT_NEAR((layers.points.back()[i] - guide(t)).norm(), radius(t), 1e-9);
+  }
+  std::printf("Eq. 2.29 tube, delta 1: %zu layers, worst |delta - 1| %.2e mm\n", layers.t.size() - 1, worst);
+}
+
+// The parallel-transported frame of a planar guide is the analytic one: swept along the torus's guide, it
+// gives the analytic torus's layers.
+TEST(ConstantDistance, GuidedTubeOnTheTorusGuideGivesTheAnalyticLayers)
+{
+  const auto guide = [](double t) { return Vec3(50.0 * std::cos(t) - 50.0, 0.0, 50.0 * std::sin(t)); };
+  const TubeSurface swept = guidedTube(
+      guide, [](double) { return 15.0; }, 0.0, kPi);
+  const TubeSurface torus = quarterTorus(50.0, 15.0);
+  double offset = 1e300;  // the two frames may differ by a fixed turn about the guide
+  for (double v0 = 0.0; v0 < 2.0 * kPi; v0 += kPi / 2)
+    offset = std::min(offset, (swept.at(0.0, 0.0) - torus.at(0.0, v0)).norm());
+  EXPECT_LT(offset, 1e-9);
+  ConstantDistanceSettings settings;
+  settings.delta = 5.0;
+  settings.pointsPerLayer = 360;
+  const ConstantDistanceLayers layers =
+      constantDistanceLayers(swept, std::vector<double>(360, 0.0), kPi / 2, settings);
+  EXPECT_EQ(layers.t.size() - 1, 17u);
 }
 
 }  // namespace
