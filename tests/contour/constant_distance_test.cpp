@@ -39,6 +39,16 @@ ConstantDistanceLayers torusLayers(int points)
                                 settings);
 }
 
+// The largest |distance to the layer below - delta| over every point of every layer after the first.
+double worstDistanceError(const ConstantDistanceLayers& layers, double delta)
+{
+  double worst = 0.0;
+  for (size_t n = 1; n < layers.points.size(); ++n)
+    for (const Vec3& p : layers.points[n])
+      worst = std::max(worst, std::abs(distanceToClosedLayer(p, layers.points[n - 1], 0, 0) - delta));
+  return worst;
+}
+
 TEST(ConstantDistance, QuarterTorusLayersAreFiveMillimetresApartInFewerStepsThanIsoV)
 {
   const ConstantDistanceLayers layers = torusLayers(360);
@@ -48,10 +58,7 @@ TEST(ConstantDistance, QuarterTorusLayersAreFiveMillimetresApartInFewerStepsThan
   const int isoV = int(std::ceil(kPi / 2 * (50.0 + 15.0) / 5.0));
   EXPECT_EQ(isoV, 21);
   EXPECT_EQ(steps, 17);
-  double worst = 0.0;
-  for (size_t n = 1; n < layers.points.size(); ++n)
-    for (const Vec3& p : layers.points[n])
-      worst = std::max(worst, std::abs(distanceToClosedLayer(p, layers.points[n - 1], 0, 0) - 5.0));
+  const double worst = worstDistanceError(layers, 5.0);
   EXPECT_LT(worst, 1e-3);
   // Each point advances along its own generatrix.
   for (size_t n = 1; n < layers.t.size(); ++n)
@@ -163,10 +170,7 @@ TEST(ConstantDistance, TheSourcesWavyTubeIsLaidAtOneMillimetre)
   const ConstantDistanceLayers layers =
       constantDistanceLayers(tube, std::vector<double>(180, 0.0), 40.0, settings);
   ASSERT_TRUE(layers.complete);
-  double worst = 0.0;
-  for (size_t n = 1; n < layers.points.size(); ++n)
-    for (const Vec3& p : layers.points[n])
-      worst = std::max(worst, std::abs(distanceToClosedLayer(p, layers.points[n - 1], 0, 0) - 1.0));
+  const double worst = worstDistanceError(layers, 1.0);
   EXPECT_LT(worst, 1e-3);
   // Each point lies on the tube: at its radius from the guide point of its own t.
   for (size_t i = 0; i < 180; i += 7) {
