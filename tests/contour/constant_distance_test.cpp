@@ -9,6 +9,8 @@
 #include "spira/base/error.h"
 #include "spira/contour/constant_distance.h"
 #include "spira/contour/guided_tube.h"
+#include "spira/contour/meshed_tube.h"
+#include "spira/mesh/mesh_primitives.h"
 
 namespace spira {
 namespace {
@@ -198,6 +200,45 @@ TEST(ConstantDistance, GuidedTubeOnTheTorusGuideGivesTheAnalyticLayers)
   const ConstantDistanceLayers layers =
       constantDistanceLayers(swept, std::vector<double>(360, 0.0), kPi / 2, settings);
   EXPECT_EQ(layers.t.size() - 1, 17u);
+}
+
+// On the part's own facets (40,000 triangles) the layers are still 5.000 mm apart, as many as on the
+// analytic torus, and within the facets' sag of the analytic layers.
+TEST(ConstantDistance, MeshedTorusGivesTheAnalyticLayersWithinTheFacetSag)
+{
+  const auto guide = [](double t) { return Vec3(50.0 * std::cos(t) - 50.0, 0.0, 50.0 * std::sin(t)); };
+  // Up to 3 rad, well past the nominal end: the inner side runs ahead.
+  const TriangleMesh mesh = makeBentTube(50.0, 15.0, 3.0, 200, 100);
+  ASSERT_EQ(mesh.faceCount(), 40000u);
+  const TubeSurface tube = meshedTube(mesh, guide, 0.0, 3.0, 40.0);
+  ConstantDistanceSettings settings;
+  settings.delta = 5.0;
+  settings.pointsPerLayer = 360;
+  const ConstantDistanceLayers meshed =
+      constantDistanceLayers(tube, std::vector<double>(360, 0.0), kPi / 2, settings);
+  ASSERT_TRUE(meshed.complete);
+  EXPECT_LT(worstDistanceError(meshed, 5.0), 1e-3);
+  const ConstantDistanceLayers analytic = torusLayers(360);
+  ASSERT_EQ(meshed.points.size(), analytic.points.size());
+  // The frames of the two surfaces may start a quarter turn apart; compare each meshed point with the
+  // nearest analytic point of the same layer.
+  const double sag = 15.0 * (1.0 - std::cos(kPi / 200));  // the facets' depth under the circle
+  double worst = 0.0;
+  for (size_t n = 0; n < meshed.points.size(); ++n)
+    for (const Vec3& p : meshed.points[n])
+      worst = std::max(worst, distanceToClosedLayer(p, analytic.points[n], 0, 0));
+  std::printf(
+      "meshed torus (40,000 triangles): %zu layers, farthest from the analytic layers %.4f mm (sag %.4f)\n",
+      meshed.points.size() - 1, worst, sag);
+  EXPECT_LT(worst, 0.02);
+}
+
+TEST(ConstantDistance, MeshedTubeRefusesAGuideOutsideThePart)
+{
+  const TriangleMesh mesh = makeBentTube(50.0, 15.0, 3.0, 40, 20);
+  const auto outside = [](double t) { return Vec3(200.0, 0.0, t); };
+  EXPECT_THROW(meshedTube(mesh, outside, 0.0, 10.0, 5.0), InputError);
+  EXPECT_THROW(meshedTube(TriangleMesh{}, outside, 0.0, 10.0, 5.0), InputError);
 }
 
 }  // namespace

@@ -119,6 +119,32 @@ TEST(Primitives, RevolvedSphereIsWatertightWithOutwardVolume)
   EXPECT_NE(r.classReason.find("watertight"), std::string::npos);
 }
 
+// A bent tube: every vertex on the torus, faces looking away from the guide, open at both ends, and
+// (Pappus) the area of the profile's circumference swept along the bend.
+TEST(Primitives, BentTubeLiesOnItsTorusAndFacesOutwards)
+{
+  const double R = 50.0, r = 15.0, angle = 0.5 * kPi;
+  const TriangleMesh m = makeBentTube(R, r, angle, 120, 80);
+  EXPECT_EQ(m.faceCount(), 2u * 120 * 80);
+  const auto guideAt = [&](const Vec3& p) {  // the nearest guide point: the torus's centre circle
+    const Vec3 fromAxis = Vec3(p.x() + R, 0.0, p.z());
+    return Vec3(Vec3(-R, 0.0, 0.0) + R * fromAxis.normalized());
+  };
+  for (const Vec3& p : m.vertices) EXPECT_NEAR((p - guideAt(p)).norm(), r, 1e-9);
+  for (size_t f = 0; f < m.faceCount(); f += 37) {
+    const Vec3 c = test::centroidOf(m, static_cast<int>(f));
+    EXPECT_GT(m.faceNormal(f).dot(c - guideAt(c)), 0.0) << "face " << f;
+  }
+  EXPECT_EQ(m.vertices[0], Vec3(r, 0.0, 0.0));
+  const MeshReport rep = validateMesh(m);
+  expectClean(rep);
+  EXPECT_EQ(rep.partClass, PartClass::Open);
+  EXPECT_EQ(rep.boundaryLoops.size(), 2u);
+  EXPECT_NEAR(m.area(), 2.0 * kPi * r * R * angle, 1e-3 * 2.0 * kPi * r * R * angle);
+  EXPECT_THROW(makeBentTube(10.0, 15.0, angle, 12, 4), InputError);
+  EXPECT_THROW(makeBentTube(50.0, 15.0, 7.0, 12, 4), InputError);
+}
+
 TEST(Primitives, TetrahedronIsRegularAndClosed)
 {
   const double a = 6.0;

@@ -158,6 +158,37 @@ TriangleMesh makeOpenCone(double r0, double r1, double height, int segments, int
   return makeRevolved(profile, segments);
 }
 
+TriangleMesh makeBentTube(double bendRadius, double radius, double angle, int segments, int rings)
+{
+  requireCounts(segments, rings);
+  requirePositive(radius, "radius");
+  require(std::isfinite(bendRadius) && bendRadius > radius,
+          "a bend radius of " + std::to_string(bendRadius) + " mm folds a tube of radius " +
+              std::to_string(radius) + " mm onto itself",
+          "give a bend radius larger than the tube's radius");
+  require(std::isfinite(angle) && angle > 0.0 && angle < 2.0 * kPi,
+          "a bend of " + std::to_string(angle) + " rad is not a section of a torus", "give 0 < angle < 2 pi");
+  TriangleMesh m;
+  for (int a = 0; a <= rings; ++a) {
+    const double t = angle * a / rings;
+    const Vec3 outward(std::cos(t), 0.0, std::sin(t));
+    const Vec3 centre(bendRadius * std::cos(t) - bendRadius, 0.0, bendRadius * std::sin(t));
+    for (int k = 0; k < segments; ++k) {
+      const double v = 2.0 * kPi * k / segments;
+      m.vertices.push_back(centre + radius * (std::cos(v) * outward + std::sin(v) * Vec3::UnitY()));
+    }
+  }
+  const auto at = [segments](int a, int k) { return a * segments + (k % segments); };
+  // Counter-clockwise seen from outside: the profile turns from +X (outward) to +Y as v grows and
+  // the tube runs up +Z at its base.
+  for (int a = 0; a < rings; ++a)
+    for (int k = 0; k < segments; ++k) {
+      m.faces.push_back({at(a, k), at(a, k + 1), at(a + 1, k + 1)});
+      m.faces.push_back({at(a, k), at(a + 1, k + 1), at(a + 1, k)});
+    }
+  return m;
+}
+
 TriangleMesh makeHemisphere(double radius, int segments, int rings)
 {
   requireCounts(segments, rings);

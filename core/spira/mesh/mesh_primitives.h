@@ -29,6 +29,10 @@ TriangleMesh makeRevolvedSolid(const std::vector<Eigen::Vector2d>& closedProfile
 // skin of `innerRadius`, from z = 0 to z = height, joined by flat end annuli. `rings` bands
 // along each skin, one across each annulus.
 TriangleMesh makeTubeSolid(double outerRadius, double innerRadius, double height, int segments, int rings);
+// A bent tube: a section of torus whose guide is the arc of radius `bendRadius` from the origin up
+// (g(t) = (R cos t - R, 0, R sin t), t from 0 to `angle` rad), with a circular profile of `radius`;
+// its base ring lies in z = 0 around +Z. `segments` round the profile, `rings` along the bend.
+TriangleMesh makeBentTube(double bendRadius, double radius, double angle, int segments, int rings);
 // A closed regular tetrahedron (4 faces) centred on the origin, useful as the smallest watertight mesh.
 TriangleMesh makeTetrahedron(double edge);
 // `segments` (at least 3) so that the edges round a circle of `radius` are about `edge` long.
