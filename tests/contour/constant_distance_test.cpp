@@ -233,6 +233,38 @@ TEST(ConstantDistance, MeshedTorusGivesTheAnalyticLayersWithinTheFacetSag)
   EXPECT_LT(worst, 0.02);
 }
 
+// A centre line given as 31 points (a skeleton's or a user's CSV) guides the meshed tube as well as
+// the analytic arc: the same layers, 5.000 mm apart.
+TEST(ConstantDistance, PolylineGuideThroughTheCentreLineGivesTheSameLayers)
+{
+  std::vector<Vec3> line;
+  for (int k = 0; k <= 30; ++k) {
+    const double t = 3.0 * k / 30;
+    line.emplace_back(50.0 * std::cos(t) - 50.0, 0.0, 50.0 * std::sin(t));
+  }
+  const auto guide = polylineGuide(line);
+  const TriangleMesh mesh = makeBentTube(50.0, 15.0, 3.0, 200, 100);
+  ConstantDistanceSettings settings;
+  settings.delta = 5.0;
+  settings.pointsPerLayer = 360;
+  // The polyline's length stands for the arc's: the nominal end, pi/2 of 3 rad along it.
+  double length = 0.0;
+  for (size_t k = 1; k < line.size(); ++k) length += (line[k] - line[k - 1]).norm();
+  // The guide starts below the base (its end tangent is a chord, not square to the base ring): the
+  // first layer is the tube's own base edge.
+  const TubeSurface tube = meshedTube(mesh, guide, -2.0, length, 40.0);
+  const std::vector<double> base = baseLayer(tube, 360, -2.0, 2.0);
+  for (size_t i = 0; i < base.size(); i += 30)
+    EXPECT_NEAR(tube.at(base[i], 2.0 * kPi * i / 360).z(), 0.0, 1e-4);
+  const ConstantDistanceLayers layers =
+      constantDistanceLayers(tube, base, length * (kPi / 2) / 3.0, settings);
+  ASSERT_TRUE(layers.complete);
+  EXPECT_EQ(layers.t.size() - 1, 17u);
+  EXPECT_LT(worstDistanceError(layers, 5.0), 1e-3);
+  EXPECT_THROW(polylineGuide({Vec3::Zero()}), InputError);
+  EXPECT_THROW(polylineGuide({Vec3::Zero(), Vec3::Zero()}), InputError);
+}
+
 TEST(ConstantDistance, MeshedTubeRefusesAGuideOutsideThePart)
 {
   const TriangleMesh mesh = makeBentTube(50.0, 15.0, 3.0, 40, 20);

@@ -24,6 +24,38 @@ Vec3 tangentAt(const std::function<Vec3(double)>& guide, double t, double h)
 
 }  // namespace
 
+std::function<Vec3(double)> polylineGuide(std::vector<Vec3> points)
+{
+  if (points.size() < 2) throw InputError("a guide curve needs at least 2 points");
+  std::vector<double> at{0.0};
+  for (size_t i = 1; i < points.size(); ++i) {
+    const double step = (points[i] - points[i - 1]).norm();
+    if (!(step > 1e-9))
+      throw InputError("the guide curve repeats its point " + std::to_string(i), "remove repeated points");
+    at.push_back(at.back() + step);
+  }
+  return [points = std::move(points), at = std::move(at)](double t) -> Vec3 {
+    const size_t n = points.size();
+    if (t <= 0.0) return points[0] + t * (points[1] - points[0]).normalized();
+    if (t >= at.back()) return points[n - 1] + (t - at.back()) * (points[n - 1] - points[n - 2]).normalized();
+    const size_t i = size_t(std::upper_bound(at.begin(), at.end(), t) - at.begin()) - 1;
+    // Centripetal Catmull-Rom (Barry-Goldman) on p0 p1 p2 p3, the ends mirrored.
+    const Vec3& p1 = points[i];
+    const Vec3& p2 = points[i + 1];
+    const Vec3 p0 = i > 0 ? points[i - 1] : Vec3(2.0 * p1 - p2);
+    const Vec3 p3 = i + 2 < n ? points[i + 2] : Vec3(2.0 * p2 - p1);
+    const double t0 = 0.0, t1 = t0 + std::sqrt((p1 - p0).norm()), t2 = t1 + std::sqrt((p2 - p1).norm()),
+                 t3 = t2 + std::sqrt((p3 - p2).norm());
+    const double u = t1 + (t - at[i]) / (at[i + 1] - at[i]) * (t2 - t1);
+    const Vec3 a1 = (t1 - u) / (t1 - t0) * p0 + (u - t0) / (t1 - t0) * p1;
+    const Vec3 a2 = (t2 - u) / (t2 - t1) * p1 + (u - t1) / (t2 - t1) * p2;
+    const Vec3 a3 = (t3 - u) / (t3 - t2) * p2 + (u - t2) / (t3 - t2) * p3;
+    const Vec3 b1 = (t2 - u) / (t2 - t0) * a1 + (u - t0) / (t2 - t0) * a2;
+    const Vec3 b2 = (t3 - u) / (t3 - t1) * a2 + (u - t1) / (t3 - t1) * a3;
+    return (t2 - u) / (t2 - t1) * b1 + (u - t1) / (t2 - t1) * b2;
+  };
+}
+
 double guideLength(const std::function<Vec3(double)>& guide, double t0, double t1, int samples)
 {
   double length = 0.0;

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <functional>
+#include <vector>
 
 #include "spira/contour/constant_distance.h"
 
@@ -13,6 +14,13 @@ namespace spira {
 // (zero tangent) or fewer than 16 samples.
 TubeSurface guidedTube(std::function<Vec3(double)> guide, std::function<double(double)> radius, double t0,
                        double t1, int samples = 4096);
+
+// A guide through the points of a polyline (a tube's centre line, from its skeleton or a user's CSV):
+// a centripetal Catmull-Rom curve, C1 so that the frame does not jump at the points, with t the
+// chordal length from the first point (0 .. the polyline's length). Past either end it runs on along
+// the end's tangent, so a tube can be followed beyond its nominal end. Throws InputError for fewer
+// than 2 points or repeated consecutive points.
+std::function<Vec3(double)> polylineGuide(std::vector<Vec3> points);
 
 // The length of the guide between t0 and t1, by `samples` chords.
 double guideLength(const std::function<Vec3(double)>& guide, double t0, double t1, int samples = 4096);

@@ -38,14 +38,34 @@ TubeSurface meshedTube(const TriangleMesh& mesh, std::function<Vec3(double)> gui
     constexpr double kMissed = std::numeric_limits<double>::quiet_NaN();
     return hit.face < 0 ? Vec3(kMissed, kMissed, kMissed) : Vec3(centre + hit.distance * across);
   };
-  for (int k = 0; k < 8; ++k) {
-    const double v = 2.0 * 3.14159265358979323846 * k / 8;
-    if (!tube.at(t0, v).allFinite())
-      throw InputError("the guide curve's base at t = " + std::to_string(t0) + " sees no wall within " +
-                           std::to_string(reach) + " mm across it",
-                       "give a guide that runs inside the tube (its centre line)");
-  }
+  bool seen = false;
+  for (int k = 0; k < 16 * 8 && !seen; ++k)
+    seen = tube.at(t0 + (t1 - t0) * (k / 8) / 15.0, 2.0 * 3.14159265358979323846 * (k % 8) / 8).allFinite();
+  if (!seen)
+    throw InputError("no ray across the guide curve meets the tube within " + std::to_string(reach) + " mm",
+                     "give a guide that runs inside the tube (its centre line)");
   return tube;
+}
+
+std::vector<double> baseLayer(const TubeSurface& tube, int points, double tFrom, double tTo, double tolerance)
+{
+  std::vector<double> t;
+  const double step = (tTo - tFrom) / 256;
+  for (int i = 0; i < points; ++i) {
+    const double v = 2.0 * 3.14159265358979323846 * i / points;
+    double lo = tFrom, hi = tFrom;
+    while (hi <= tTo && !tube.at(hi, v).allFinite()) lo = hi, hi += step;
+    if (hi > tTo)
+      throw InputError("no ray across the guide meets the tube at v = " + std::to_string(v) + " rad",
+                       "check that the guide runs inside the tube");
+    if (hi > tFrom)
+      while (hi - lo > tolerance) {
+        const double mid = 0.5 * (lo + hi);
+        (tube.at(mid, v).allFinite() ? hi : lo) = mid;
+      }
+    t.push_back(hi);
+  }
+  return t;
 }
 
 }  // namespace spira
