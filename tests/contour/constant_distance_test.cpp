@@ -265,6 +265,24 @@ TEST(ConstantDistance, PolylineGuideThroughTheCentreLineGivesTheSameLayers)
   EXPECT_THROW(polylineGuide({Vec3::Zero(), Vec3::Zero()}), InputError);
 }
 
+// A meshed tube that ends at its nominal end: the inner side, running ahead, leaves the mesh before the
+// outer one reaches the end. The layers stop there as incomplete, every point laid on the mesh.
+TEST(ConstantDistance, MeshedTubeEndingAtItsEndStopsWithEveryPointOnTheMesh)
+{
+  const auto guide = [](double t) { return Vec3(50.0 * std::cos(t) - 50.0, 0.0, 50.0 * std::sin(t)); };
+  const TriangleMesh mesh = makeBentTube(50.0, 15.0, kPi / 2, 120, 60);
+  ConstantDistanceSettings settings;
+  settings.delta = 5.0;
+  settings.pointsPerLayer = 120;
+  const ConstantDistanceLayers layers = constantDistanceLayers(
+      meshedTube(mesh, guide, 0.0, 3.0, 40.0), std::vector<double>(120, 0.0), kPi / 2, settings);
+  EXPECT_FALSE(layers.complete);
+  EXPECT_GE(layers.points.size(), 10u);
+  for (const auto& layer : layers.points)
+    for (const Vec3& p : layer) ASSERT_TRUE(p.allFinite());
+  EXPECT_LT(worstDistanceError(layers, 5.0), 1e-3);
+}
+
 TEST(ConstantDistance, MeshedTubeRefusesAGuideOutsideThePart)
 {
   const TriangleMesh mesh = makeBentTube(50.0, 15.0, 3.0, 40, 20);

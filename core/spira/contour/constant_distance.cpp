@@ -118,6 +118,7 @@ ConstantDistanceLayers constantDistanceLayers(const TubeSurface& surface,
       }
       t[size_t(i)] = 0.5 * (lo + hi);
       points[size_t(i)] = surface.at(t[size_t(i)], v[size_t(i)]);
+      if (!points[size_t(i)].allFinite()) return out;  // the surface has a hole there (a meshed tube's end)
     }
     out.t.push_back(std::move(t));
     out.points.push_back(std::move(points));
