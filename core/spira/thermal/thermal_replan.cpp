@@ -44,6 +44,16 @@ struct Candidate {
   double dwellTime = 0.0;
 };
 
+// What a remedy starts from: the current path with its measures, without its study (each round
+// simulates its own; the mesh and frames of the starting point are not needed again).
+Candidate startingPoint(Candidate& current)
+{
+  ThermalStudy study = std::move(current.study);
+  Candidate base = current;  // all but the study
+  current.study = std::move(study);
+  return base;
+}
+
 std::map<int, int> revolutionSizes(const Trajectory& t, int path)
 {
   std::map<int, int> size;
@@ -187,7 +197,7 @@ void Replanner::deposit()
     note("the deposit remedy needs the process window's h_min");
     return;
   }
-  const Candidate base = current_;
+  const Candidate base = startingPoint(current_);
   // Per path the band from two revolutions under the first one above the limit to the last one
   // above it, within the revolutions that visit every generatrix.
   std::map<int, ThinningZone> zones;
@@ -276,7 +286,7 @@ void Replanner::deposit()
 void Replanner::heat()
 {
   if (met() || !replan_.heat) return;
-  const Candidate base = current_;
+  const Candidate base = startingPoint(current_);
   // The lowest factor each revolution may be slowed to: no point below the process's slowest wire
   // feed or travel speed.
   std::map<RevolutionKey, double> floorOf, factorOf;
@@ -329,7 +339,7 @@ void Replanner::heat()
 void Replanner::dwell()
 {
   if (met() || !replan_.dwell) return;
-  const Candidate base = current_;
+  const Candidate base = startingPoint(current_);
   // Where each revolution's dwell goes: the last point of the revolution under it.
   std::map<RevolutionKey, size_t> lastOf;
   for (size_t i = 0; i < base.trajectory.size(); ++i) lastOf[keyOf(base.trajectory.points[i])] = i;
@@ -338,8 +348,9 @@ void Replanner::dwell()
     double unchanged = 0.0;  // the interpass temperature without this dwell
   };
   std::map<RevolutionKey, Wait> waits;
-  const auto& heatTime = base.study.mesh.heatTime;
-  const auto& heatIndex = base.study.mesh.pointHeatIndex;
+  // The starting point's timing: current_ changes with each round.
+  const std::vector<double> heatTime = current_.study.mesh.heatTime;
+  const std::vector<int> heatIndex = current_.study.mesh.pointHeatIndex;
   while (!met() && roundLeft()) {
     bool changed = false;
     for (const RevolutionKey& key : overLimit(current_)) {
