@@ -26,7 +26,12 @@ TriangleMesh makeSample(const std::string& name)
     const double r0 = 60.0, r1 = 40.0, h = 100.0;
     return makeOpenCone(r0, r1, h, segmentsForEdge(r0, kEdge), static_cast<int>(h / kEdge));
   }
-  throw InputError("unknown sample '" + name + "'", "use one of: open-cylinder, dome, cone");
+  if (name == "bent-tube") {
+    // The source's quarter torus (004_bd0df31205c0c3c0.txt §2.3): bend radius 50, tube radius 15.
+    const double bend = 50.0, r = 15.0, angle = 0.5 * 3.14159265358979323846;
+    return makeBentTube(bend, r, angle, segmentsForEdge(r, kEdge), static_cast<int>(bend * angle / kEdge));
+  }
+  throw InputError("unknown sample '" + name + "'", "use one of: open-cylinder, dome, cone, bent-tube");
 }
 
 }  // namespace
@@ -38,7 +43,8 @@ int cmdSample(const std::vector<std::string>& argv)
     std::cout
         << "usage: spira-cli sample NAME -o FILE\n\n"
            "Writes a sample part made in code: open-cylinder (R 50, H 100 mm), dome (hemisphere R 60 mm),\n"
-           "cone (R 60 to 40, H 100 mm). The format follows FILE's extension (.stl, .obj, .ply).\n";
+           "cone (R 60 to 40, H 100 mm), bent-tube (quarter torus, bend R 50, tube r 15 mm).\n"
+           "The format follows FILE's extension (.stl, .obj, .ply).\n";
     return kExitOk;
   }
   const std::string out = args.takeOption("-o");

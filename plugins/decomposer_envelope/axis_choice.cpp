@@ -14,23 +14,6 @@ const std::string kIsovalueHint = "use the iso-value strategy (--strategy isoval
 
 }  // namespace
 
-Vec3 loopCentroid(const TriangleMesh& mesh, const BoundaryLoop& loop)
-{
-  Vec3 sum = Vec3::Zero();
-  double length = 0.0;
-  const size_t n = loop.vertices.size();
-  for (size_t i = 0; i < n; ++i) {
-    const Vec3& a = mesh.vertices[loop.vertices[i]];
-    const Vec3& b = mesh.vertices[loop.vertices[(i + 1) % n]];
-    const double l = (b - a).norm();
-    sum += l * 0.5 * (a + b);
-    length += l;
-  }
-  if (length > 0) return sum / length;
-  for (int v : loop.vertices) sum += mesh.vertices[v];
-  return n ? Vec3(sum / static_cast<double>(n)) : Vec3::Zero();
-}
-
 AxisChoice chooseProjectionAxis(const TriangleMesh& mesh, const BoundaryLoop& lower, AxisMode mode,
                                 Progress& progress)
 {

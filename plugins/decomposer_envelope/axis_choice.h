@@ -22,10 +22,6 @@ struct AxisChoice {
   std::vector<std::string> warnings;
 };
 
-// Centroid of the loop's polygon (edge midpoints weighted by edge length: uneven vertex spacing
-// does not pull it sideways).
-Vec3 loopCentroid(const TriangleMesh& mesh, const BoundaryLoop& loop);
-
 // The axis the envelope points are projected towards. With a skeleton (Auto, Skeleton) the part
 // must be mono-branch with a skeleton rising steadily in z, else InputError says so and points
 // to the iso-value strategy. The skeleton's nodes are first fitted as a smooth function of height

@@ -122,6 +122,7 @@ ConstantDistanceLayers constantDistanceLayers(const TubeSurface& surface,
     }
     out.t.push_back(std::move(t));
     out.points.push_back(std::move(points));
+    if (s.onLayer) s.onLayer(out.t.size());
   }
   out.complete = true;
   return out;

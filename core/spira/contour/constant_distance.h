@@ -22,6 +22,9 @@ struct ConstantDistanceSettings {
   // (0: an eighth of the layer), so that it never measures to the tube's opposite wall.
   int window = 0;
   double tolerance = 1e-6;  // mm on the distance
+  // Called after each layer with the number of layers so far (the first included): progress, and
+  // cancellation by throwing.
+  std::function<void(size_t layers)> onLayer;
 };
 
 struct ConstantDistanceLayers {

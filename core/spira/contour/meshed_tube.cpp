@@ -47,25 +47,43 @@ TubeSurface meshedTube(const TriangleMesh& mesh, std::function<Vec3(double)> gui
   return tube;
 }
 
-std::vector<double> baseLayer(const TubeSurface& tube, int points, double tFrom, double tTo, double tolerance)
+namespace {
+
+// Per point, the t in [from, to] where the ray first meets the mesh, scanning from `from` towards `to`
+// (either direction) and bisecting to `tolerance`.
+std::vector<double> edgeLayer(const TubeSurface& tube, int points, double from, double to, double tolerance)
 {
   std::vector<double> t;
-  const double step = (tTo - tFrom) / 256;
+  const double step = (to - from) / 256;
+  const double span = std::abs(to - from);
   for (int i = 0; i < points; ++i) {
     const double v = 2.0 * 3.14159265358979323846 * i / points;
-    double lo = tFrom, hi = tFrom;
-    while (hi <= tTo && !tube.at(hi, v).allFinite()) lo = hi, hi += step;
-    if (hi > tTo)
+    double outside = from, inside = from;
+    while (std::abs(inside - from) <= span && !tube.at(inside, v).allFinite())
+      outside = inside, inside += step;
+    if (std::abs(inside - from) > span)
       throw InputError("no ray across the guide meets the tube at v = " + std::to_string(v) + " rad",
                        "check that the guide runs inside the tube");
-    if (hi > tFrom)
-      while (hi - lo > tolerance) {
-        const double mid = 0.5 * (lo + hi);
-        (tube.at(mid, v).allFinite() ? hi : lo) = mid;
+    if (inside != from)
+      while (std::abs(inside - outside) > tolerance) {
+        const double mid = 0.5 * (outside + inside);
+        (tube.at(mid, v).allFinite() ? inside : outside) = mid;
       }
-    t.push_back(hi);
+    t.push_back(inside);
   }
   return t;
+}
+
+}  // namespace
+
+std::vector<double> baseLayer(const TubeSurface& tube, int points, double tFrom, double tTo, double tolerance)
+{
+  return edgeLayer(tube, points, tFrom, tTo, tolerance);
+}
+
+std::vector<double> topLayer(const TubeSurface& tube, int points, double tFrom, double tTo, double tolerance)
+{
+  return edgeLayer(tube, points, tTo, tFrom, tolerance);
 }
 
 }  // namespace spira

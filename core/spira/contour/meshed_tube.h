@@ -25,4 +25,9 @@ TubeSurface meshedTube(const TriangleMesh& mesh, std::function<Vec3(double)> gui
 std::vector<double> baseLayer(const TubeSurface& tube, int points, double tFrom, double tTo,
                               double tolerance = 1e-6);
 
+// The tube's upper edge the same way: per point, the highest t in [tFrom, tTo] at which the ray meets
+// the mesh. Throws InputError where no ray in the range meets it.
+std::vector<double> topLayer(const TubeSurface& tube, int points, double tFrom, double tTo,
+                             double tolerance = 1e-6);
+
 }  // namespace spira

@@ -29,4 +29,8 @@ struct BoundaryLoop {
 std::vector<BoundaryLoop> extractBoundaryLoops(const TriangleMesh& mesh, const EdgeTable& edges,
                                                const VertexFans& fans);
 
+// Centroid of the loop's polygon (edge midpoints weighted by edge length: uneven vertex spacing
+// does not pull it sideways).
+Vec3 loopCentroid(const TriangleMesh& mesh, const BoundaryLoop& loop);
+
 }  // namespace spira

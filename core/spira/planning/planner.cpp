@@ -131,19 +131,25 @@ void finishMonoBranch(const PluginRegistry& registry, const PlanRequest& request
                        &out.field};
   input.window = {settings.spiral.hMin, settings.spiral.hMax,
                   settings.spiral.heightTolerance * settings.spiral.h, settings.process.beadWidth};
+  input.spiral = &settings.spiral;
   SubProgress dp(progress, 0.35, 0.8, "generatrices");
   DecomposeResult decomposition = decomposer.decompose(input, settings.decomposerParams, dp);
   out.generatrices = std::move(decomposition.generatrices);
   out.warnings.insert(out.warnings.end(), decomposition.warnings.begin(), decomposition.warnings.end());
-  if (request.baseSupportGap > 0.0)
-    extendBelowBase(out.generatrices, request.baseSupportGap);
-  else
-    extendToSubstrate(out.generatrices, request.substrateZ);
-  clock.lap("decomposition");
-
-  SubProgress sp(progress, 0.8, 0.95, "spiral");
-  out.spiral = buildSpiral(out.generatrices, settings.spiral, sp);
-  clock.lap("spiral");
+  out.layers = std::move(decomposition.layers);
+  if (decomposition.path) {
+    out.spiral = std::move(*decomposition.path);
+    clock.lap("decomposition");
+  } else {
+    if (request.baseSupportGap > 0.0)
+      extendBelowBase(out.generatrices, request.baseSupportGap);
+    else
+      extendToSubstrate(out.generatrices, request.substrateZ);
+    clock.lap("decomposition");
+    SubProgress sp(progress, 0.8, 0.95, "spiral");
+    out.spiral = buildSpiral(out.generatrices, settings.spiral, sp);
+    clock.lap("spiral");
+  }
   out.process = applyProcess(out.spiral.trajectory, settings.process);
   if (!out.process.violations.empty()) {
     const ProcessViolation& first = out.process.violations.front();

@@ -99,6 +99,8 @@ struct PlanOutput {
   // Set for a thin-walled solid: everything above (field, topology, deposit check) is of its
   // mid-surface, SolidWall::midSurface.
   std::optional<SolidWall> solid;
+  // Set when the decomposer laid the path in layers (decomposer.constant_distance): what it measured.
+  std::optional<LayerStats> layers;
 
   // The verdict, from the trajectory alone (docs/deposit-check.md); spiral.report keeps the
   // heights the spiral builder planned. Process-limit violations do not make a plan infeasible:

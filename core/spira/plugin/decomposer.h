@@ -7,6 +7,8 @@
 #include "spira/base/progress.h"
 #include "spira/mesh/mesh_report.h"
 #include "spira/mesh/triangle_mesh.h"
+#include "spira/path/spiral_report.h"
+#include "spira/path/spiral_settings.h"
 #include "spira/path/trajectory.h"
 #include "spira/plugin/plugin.h"
 
@@ -34,11 +36,29 @@ struct DecomposeInput {
   // What the spiral will lay, for decomposers that can tell from their generatrices alone that no
   // spiral can follow them; zero: not known.
   DecomposeWindow window{};
+  // The spiral the planner lays on the generatrices (nominal height, window, start-up, termination), for
+  // decomposers that lay the path themselves; nullptr: not known.
+  const SpiralSettings* spiral = nullptr;
+};
+
+// What a decomposer that lays its path in layers (decomposer.constant_distance) measured on them.
+struct LayerStats {
+  int layers = 0;                         // deposited layers, the base edge not counted
+  double deltaMin = 0.0, deltaMax = 0.0;  // each layer point's distance to the layer below, mm
+  double maxKinkDeg = 0.0;                // the largest turning angle between consecutive segments of a layer
+  std::vector<double> kinkDeg;            // the same per deposited layer
+  int arcStarts = 0;                      // arcs the path is laid in
+  std::string output;                     // "spiral" or "layers"
+  std::string end;                        // how the part's end was reached: "truncate" or "modulate"
 };
 
 struct DecomposeResult {
   Generatrices generatrices;
   std::vector<std::string> warnings;
+  // Set by decomposers that lay the path themselves: it replaces the spiral the planner would lay on
+  // `generatrices` (which then only show the decomposition).
+  std::optional<SpiralResult> path;
+  std::optional<LayerStats> layers;
 };
 
 class DecomposerPlugin : public Plugin {
