@@ -28,8 +28,11 @@ void printTable(const Comparison& c, std::ostream& out)
         << " mm (mean " << s.depositMean << "), " << s.outside << " of " << s.points.size()
         << " points outside the window, " << s.revolutions
         << (s.kind == "planar" ? " layers" : " revolutions");
-    if (s.kind == "ctpp")
+    if (s.kind == "ctpp" && s.maxKinkDeg < 0.0)
       out << ", generatrices " << s.generatrixLengthMin << " .. " << s.generatrixLengthMax << " mm";
+    out << ", " << s.arcStarts << " arc start(s)";
+    if (s.maxKinkDeg >= 0.0)
+      out << std::setprecision(1) << ", layer kink up to " << s.maxKinkDeg << " deg" << std::setprecision(3);
     out << ", " << s.runtime << " s\n";
   }
 }
@@ -52,7 +55,8 @@ int cmdCompare(const std::vector<std::string>& argv)
            "with horizontal planes every h as the 2.5D reference (each point's deposit is its\n"
            "distance to the layer below; the upper edge is the last layer), and writes\n"
            "DIR/compare.json (per strategy: feasible or why it failed, generatrix lengths,\n"
-           "deposit min/max/mean, points outside the window, revolutions, runtime) and\n"
+           "deposit min/max/mean, points outside the window, revolutions, arc starts, layer kinks,\n"
+           "runtime) and\n"
            "DIR/compare.csv (strategy,x,y,z,height per point). A strategy that fails is listed,\n"
            "not an error; exit code 4 when no strategy plans the part feasibly.\n\n"
         << kPlacementHelp << paramFlagsHelp(targets);

@@ -45,9 +45,19 @@ void printSummary(const DocumentPlan& done, std::ostream& out)
   if (plan.paths.size() > 1)
     out << plan.paths.size() << " sub-paths (trunk first), one arc start and stop each, split at "
         << plan.branching->saddles.size() << " saddle(s)\n";
-  out << s.nRevolutions << " revolutions (" << s.nStartupRevolutions << " start-up, " << s.nLayers
-      << " modulated, " << s.nEndRevolutions << " closing), " << s.nPoints << " points, path " << s.pathLength
-      << " mm\n";
+  if (plan.layers) {
+    const LayerStats& l = *plan.layers;
+    out << l.layers << " layers at " << l.deltaMin << " .. " << l.deltaMax
+        << " mm from the layer below, largest kink " << std::setprecision(1) << l.maxKinkDeg << " deg, "
+        << l.arcStarts << " arc start(s), end " << (l.end == "modulate" ? "modulated" : "truncated") << "\n"
+        << std::setprecision(3);
+  }
+  if (plan.layers && plan.layers->output == "layers")
+    out << s.nPoints << " points in " << plan.layers->layers << " layers, path " << s.pathLength << " mm\n";
+  else
+    out << s.nRevolutions << " revolutions (" << s.nStartupRevolutions << " start-up, " << s.nLayers
+        << " modulated, " << s.nEndRevolutions << " closing), " << s.nPoints << " points, path "
+        << s.pathLength << " mm\n";
   out << "deposit height " << s.heightMin << " .. " << s.heightMax << " mm (mean " << s.heightMean
       << " mm) in the modulated layers";
   if (s.rampHeightMax > 0.0)

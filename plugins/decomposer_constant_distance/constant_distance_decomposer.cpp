@@ -1,6 +1,7 @@
 #include "constant_distance_decomposer.h"
 
 #include <algorithm>
+#include <cmath>
 #include <memory>
 
 #include "layer_path.h"
@@ -29,11 +30,13 @@ ParamSchema makeSchema()
        "spiral: one continuous spiral through the layers, one arc start; layers: one arc per layer, "
        "its start staggered from the one below.",
        "Constant distance"}));
-  defs.push_back(choiceParam("stagger", "golden", {"golden", "constant", "none"},
+  defs.push_back(choiceParam("stagger", "golden", {"golden", "constant", "kink", "none"},
                              {"Staggered starts",
                               "Where each layer's arc starts (layers path): golden: 137.5 deg further round "
                               "than the layer below, never twice near the same place; constant: 'Stagger "
-                              "angle' further round; none: all on one line.",
+                              "angle' further round; kink: where the layer turns most, so its kink becomes "
+                              "the arc's ends; none: all "
+                              "on one line.",
                               "Constant distance"}));
   defs.push_back(
       numberParam("stagger_angle", 30.0, -360.0, 360.0, "deg",
@@ -47,6 +50,16 @@ ParamSchema makeSchema()
        "layers are re-laid at heights inside the process window so that the last one lies on the edge, where "
        "the window is wide enough for the edge's slant across the layers.",
        "Constant distance"}));
+  defs.push_back(numberParam("smooth_kink", 0.0, 0.0, 180.0, "deg",
+                             {"Smooth kinks above",
+                              "On a bend the layers develop a corner on the side that lags "
+                              "(004_bd0df31205c0c3c0.txt §2.3: up to 113 deg "
+                              "on a quarter torus), which slows the robot and thickens the wall there. "
+                              "Points where a layer turns more "
+                              "than this are moved towards their neighbours as far as their deposit stays "
+                              "inside the process window. "
+                              "0: layers kept at the constant distance.",
+                              "Constant distance"}));
   defs.push_back(
       pathParam("guide", {"Guide curve",
                           "A CSV of the tube's centre line (x,y,z in mm, one point per line, base end "
@@ -59,6 +72,7 @@ Stagger staggerOf(const std::string& v)
 {
   if (v == "none") return Stagger::None;
   if (v == "constant") return Stagger::Constant;
+  if (v == "kink") return Stagger::Kink;
   return Stagger::Golden;
 }
 
@@ -111,6 +125,7 @@ DecomposeResult ConstantDistanceDecomposer::decomposeChecked(const DecomposeInpu
   s.tolerance = spiral.heightTolerance * spiral.h;
   s.points = int(values.getInt("points_per_rev"));
   s.end = values.getString("end") == "modulate" ? TubeEnd::Modulate : TubeEnd::Truncate;
+  s.smoothKinkDeg = values.getDouble("smooth_kink");
   const double radius = std::max(loopRadius(input.mesh, input.lower), loopRadius(input.mesh, *input.upper));
   SubProgress layerProgress(progress, 0.0, 0.8, "constant-distance layers");
   const TubeLayers layers = layTubeLayers(input.mesh, line, 3.0 * radius + 4.0 * spiral.h, s, layerProgress);
@@ -128,6 +143,11 @@ DecomposeResult ConstantDistanceDecomposer::decomposeChecked(const DecomposeInpu
   DecomposeResult out;
   out.generatrices = std::move(laid.generatrices);
   out.warnings = layers.warnings;
+  if (layers.smoothedPoints > 0)
+    out.warnings.push_back(std::to_string(layers.smoothedPoints) +
+                           " layer point(s) moved off the constant distance "
+                           "to smooth kinks sharper than " +
+                           std::to_string(int(std::lround(s.smoothKinkDeg))) + " deg");
   out.path = std::move(laid.path);
   out.layers = std::move(laid.stats);
   return out;

@@ -22,11 +22,21 @@ double angleOf(int i, int n)
   return 2.0 * kPi * i / n;
 }
 
-// The outward surface normal at (t, v_i): across the generatrices by the neighbouring ones, along them
-// by a short step in t, both on the part's own facets.
+// The outward surface normal at (t, v_i): the surface's own where it has one (a mesh's, smooth across
+// faces), else across the generatrices by the neighbouring ones and along them by a short step in t.
 Vec3 normalAt(const TubeLayers& L, double t, int i)
 {
   const int n = int(L.top.size());
+  if (L.surface.normal) {
+    // Averaged over half a millimetre around the point: a sliver face of the mesh (a crease between two
+    // patches of a CAD export) turns the normal it alone gives, and with it the torch, by up to 90 deg.
+    constexpr double e = 0.5;
+    const double v = angleOf(i, n), dv = e / std::max(L.radiusMin, 1.0);
+    Vec3 sum = Vec3::Zero();
+    for (const auto& [dt, dw] : {std::pair{0.0, 0.0}, {e, 0.0}, {-e, 0.0}, {0.0, dv}, {0.0, -dv}})
+      sum += L.surface.normal(t + dt, v + dw);
+    if (sum.norm() > 1e-9) return sum.normalized();
+  }
   constexpr double e = 0.05;
   const Vec3 across = L.surface.at(t, angleOf((i + 1) % n, n)) - L.surface.at(t, angleOf((i + n - 1) % n, n));
   const Vec3 along = L.surface.at(t + e, angleOf(i, n)) - L.surface.at(t - e, angleOf(i, n));
@@ -73,11 +83,29 @@ std::vector<int> pieceStarts(const std::vector<char>& kept, int start)
   return starts;
 }
 
-int layerStart(const LayerPathSettings& s, int layer, int n)
+// The point where a closed layer turns most.
+int sharpestTurn(const std::vector<Vec3>& layer)
+{
+  const int n = int(layer.size());
+  int best = 0;
+  double worst = -2.0;
+  for (int i = 0; i < n; ++i) {
+    const Vec3 in = layer[size_t(i)] - layer[size_t((i + n - 1) % n)];
+    const Vec3 out = layer[size_t((i + 1) % n)] - layer[size_t(i)];
+    if (in.norm() < 1e-12 || out.norm() < 1e-12) continue;
+    const double turn = 1.0 - in.normalized().dot(out.normalized());
+    if (turn > worst) worst = turn, best = i;
+  }
+  return best;
+}
+
+int layerStart(const LayerPathSettings& s, const std::vector<Vec3>& points, int layer, int n)
 {
   switch (s.stagger) {
     case Stagger::None:
       return 0;
+    case Stagger::Kink:
+      return sharpestTurn(points);
     case Stagger::Constant:
       return int(std::lround(layer * s.staggerAngle / (2.0 * kPi) * n)) % n;
     case Stagger::Golden:
@@ -93,7 +121,7 @@ void layLayers(const TubeLayers& L, const LayerPathSettings& s, Builder& b, size
   for (size_t k = 1; k < L.t.size(); ++k) {
     const std::vector<char>& kept = L.kept[k];
     const bool whole = std::all_of(kept.begin(), kept.end(), [](char c) { return c; });
-    const int start = layerStart(s, int(k), n);
+    const int start = layerStart(s, L.points[k], int(k), n);
     for (int first : pieceStarts(kept, start)) {
       // A whole layer closes on its start; a piece runs to its last point on the part.
       const int count = whole ? n + 1 : [&] {

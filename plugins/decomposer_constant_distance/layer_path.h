@@ -14,6 +14,7 @@ enum class Stagger {
   None,      // every layer starts at v = 0
   Constant,  // each layer starts a fixed angle further round than the one below
   Golden,    // each layer starts a golden angle (137.5 deg) further round: never twice near the same place
+  Kink,      // each layer starts and ends where it turns most: its kink becomes the arc's two ends
 };
 
 struct LayerPathSettings {

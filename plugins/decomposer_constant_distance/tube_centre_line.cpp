@@ -1,10 +1,10 @@
 #include "tube_centre_line.h"
 
 #include <algorithm>
-#include <fstream>
 #include <iomanip>
 #include <sstream>
 
+#include "spira/base/atomic_file.h"
 #include "spira/base/error.h"
 #include "spira/base/number_text.h"
 #include "spira/contour/iso_contour.h"
@@ -80,9 +80,8 @@ Polyline centreLineFromField(const TriangleMesh& mesh, const std::vector<double>
 
 Polyline readGuideCsv(const std::string& path)
 {
-  std::ifstream in(path);
-  if (!in)
-    throw IoError("cannot read the guide curve file '" + path + "'", "check the path given to --guide");
+  // A named pipe or a device never reaches a stream: readFile refuses anything but a regular file.
+  std::istringstream in(readFile(path));
   Polyline line;
   std::string text;
   int number = 0;

@@ -19,9 +19,9 @@ Polyline centreLineFromField(const TriangleMesh& mesh, const std::vector<double>
                              const BoundaryLoop& lower, const BoundaryLoop& upper, int levels = 48);
 
 // A guide curve given by the user: one point per line, "x,y,z" in mm (commas, semicolons, spaces or
-// tabs between), an optional header line, '#' comments. Throws IoError when the file cannot be read and
-// InputError naming the line for anything else than three finite numbers, or fewer than 2 distinct
-// points.
+// tabs between), an optional header line, '#' comments. Throws IoError when the file is missing or is not
+// a regular file, and InputError naming the line for anything else than three finite numbers, or fewer
+// than 2 distinct points.
 Polyline readGuideCsv(const std::string& path);
 
 // The mean distance of a boundary loop's vertices from its centroid (loopCentroid).

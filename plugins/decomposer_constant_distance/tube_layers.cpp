@@ -76,11 +76,16 @@ TubeSurface continuedPastTop(const TubeSurface& tube, const std::function<Vec3(d
   TubeSurface out;
   out.t0 = tube.t0;
   out.tEnd = tEnd;
-  out.at = [tube, top, edge, along, n](double t, double v) {
-    const int i = ((int(std::lround(v * n / (2.0 * kPi))) % n) + n) % n;
+  const auto index = [n](double v) { return ((int(std::lround(v * n / (2.0 * kPi))) % n) + n) % n; };
+  out.at = [tube, top, edge, along, index](double t, double v) {
+    const int i = index(v);
     if (t <= top[size_t(i)]) return tube.at(t, v);
     return Vec3(edge[size_t(i)] + (t - top[size_t(i)]) * along[size_t(i)]);
   };
+  if (tube.normal)
+    out.normal = [tube, top, index](double t, double v) {
+      return tube.normal(std::min(t, top[size_t(index(v))]), v);
+    };
   return out;
 }
 
@@ -210,6 +215,87 @@ void truncateEnd(TubeLayers& L)
   }
 }
 
+double turningDeg(const std::vector<Vec3>& p, int i)
+{
+  const int n = int(p.size());
+  const Vec3 in = p[size_t(i)] - p[size_t((i + n - 1) % n)], out = p[size_t((i + 1) % n)] - p[size_t(i)];
+  if (in.norm() < 1e-12 || out.norm() < 1e-12) return 0.0;
+  return std::acos(std::clamp(in.normalized().dot(out.normalized()), -1.0, 1.0)) * 180.0 / kPi;
+}
+
+// Relaxes the layer's t towards its neighbours' around every point turning more than `maxDeg`, each move
+// cut short where the point's distance to the layer below would leave [low, high]. Returns the points moved.
+int smoothKinks(const TubeSurface& surface, std::vector<double>& t, std::vector<Vec3>& p,
+                const std::vector<Vec3>& below, double maxDeg, double low, double high)
+{
+  const int n = int(t.size());
+  const int window = std::max(2, n / 8);
+  constexpr int kReach = 3, kPasses = 60;
+  std::vector<char> moved(t.size(), 0);
+  for (int pass = 0; pass < kPasses; ++pass) {
+    std::vector<char> near(t.size(), 0);
+    bool any = false;
+    for (int i = 0; i < n; ++i)
+      if (turningDeg(p, i) > maxDeg) {
+        any = true;
+        for (int d = -kReach; d <= kReach; ++d) near[size_t(((i + d) % n + n) % n)] = 1;
+      }
+    if (!any) break;
+    bool changed = false;
+    for (int i = 0; i < n; ++i) {
+      if (!near[size_t(i)]) continue;
+      const double v = 2.0 * kPi * i / n;
+      const double target = 0.5 * (t[size_t((i + n - 1) % n)] + t[size_t((i + 1) % n)]);
+      const auto fits = [&](double x) {
+        const Vec3 q = surface.at(x, v);
+        const double d = q.allFinite() ? distanceToClosedLayer(q, below, i, window) : -1.0;
+        return d >= low && d <= high;
+      };
+      double to = t[size_t(i)] + 0.5 * (target - t[size_t(i)]);
+      if (!fits(to)) {
+        double ok = t[size_t(i)], bad = to;
+        if (!fits(ok)) continue;
+        for (int it = 0; it < 30; ++it) {
+          const double mid = 0.5 * (ok + bad);
+          (fits(mid) ? ok : bad) = mid;
+        }
+        to = ok;
+      }
+      if (std::abs(to - t[size_t(i)]) < 1e-9) continue;
+      t[size_t(i)] = to;
+      p[size_t(i)] = surface.at(to, v);
+      moved[size_t(i)] = 1;
+      changed = true;
+    }
+    if (!changed) break;
+  }
+  return int(std::count(moved.begin(), moved.end(), 1));
+}
+
+// A layer point that could not be put delta above the layer below lies where the surface jumps along its
+// generatrix: a ledge, lip or fold the guide's rays cross, which no layer at a constant distance follows.
+// Smoothed kinks (settings.smoothKinkDeg) are off the distance on purpose, inside the window.
+void refuseSteps(const ConstantDistanceLayers& layers, const TubeLayerSettings& s)
+{
+  const double delta = s.delta;
+  double worst = 0.0;
+  Vec3 at = Vec3::Zero();
+  for (size_t k = 1; k < layers.points.size(); ++k) {
+    const std::vector<double> d = layerDistances(layers.points[k], layers.points[k - 1]);
+    for (size_t i = 0; i < d.size(); ++i) {
+      if (s.smoothKinkDeg > 0.0 && d[i] >= s.hMin && d[i] <= s.hMax) continue;
+      if (std::abs(d[i] - delta) > worst) worst = std::abs(d[i] - delta), at = layers.points[k][i];
+    }
+  }
+  if (worst <= 0.01 * delta) return;
+  throw InputError(
+      "the wall steps across the tube near " + pointText(at) +
+          " (a ledge, lip or fold): a layer there cannot lie " + mm(delta, 2) +
+          " mm from the one below (it would lie " + mm(worst, 2) + " mm off)",
+      "plan the part with --strategy isovalue, which follows the surface itself, or smooth the step "
+      "in the CAD model");
+}
+
 }  // namespace
 
 std::vector<double> layerDistances(const std::vector<Vec3>& layer, const std::vector<Vec3>& below,
@@ -256,6 +342,14 @@ TubeLayers layTubeLayers(const TriangleMesh& mesh, const Polyline& centreLine, d
     progress.report(std::min(0.95, 0.05 + 0.9 * double(layers) / expected), "constant-distance layers");
     progress.checkCancel();
   };
+  // The deposit check measures a smoothed point along its build direction, a few hundredths off the
+  // distance the smoothing keeps: it aims that much inside the window.
+  const double margin = 0.05 * (s.hMax - s.hMin);
+  if (s.smoothKinkDeg > 0.0)
+    cd.adjustLayer = [&](std::vector<double>& t, std::vector<Vec3>& points, const std::vector<Vec3>& below) {
+      L.smoothedPoints +=
+          smoothKinks(L.surface, t, points, below, s.smoothKinkDeg, s.hMin + margin, s.hMax - margin);
+    };
   progress.report(0.05, "constant-distance layers");
   ConstantDistanceLayers layers = constantDistanceLayers(L.surface, base, topMax + 1e-9, cd);
   if (!layers.complete) {
@@ -264,10 +358,12 @@ TubeLayers layTubeLayers(const TriangleMesh& mesh, const Polyline& centreLine, d
     for (const Vec3& p : last) centre += p / double(last.size());
     throw InputError("the constant-distance layers stop after " + std::to_string(layers.t.size() - 1) +
                          " layers, around " + pointText(centre) +
-                         ": the next layer does not find the wall all around (a hole in it, or the guide "
-                         "leaves the tube there)",
-                     "repair the mesh there, or give the tube's centre line with --guide");
+                         ": the next layer does not find the wall all around there (the wall parts into "
+                         "branches, has a gap, or the guide leaves the tube)",
+                     "plan a branching part with --strategy isovalue, close the gap in the mesh, or give the "
+                     "tube's centre line with --guide");
   }
+  refuseSteps(layers, s);
   L.t = std::move(layers.t);
   L.points = std::move(layers.points);
   L.kept.assign(L.t.size(), std::vector<char>(size_t(s.points), 1));

@@ -24,6 +24,9 @@ struct TubeLayerSettings {
   double hMin = 1.8, hMax = 2.2, tolerance = 0.01;
   int points = 360;  // per layer
   TubeEnd end = TubeEnd::Truncate;
+  // Layers turning more than this (deg) at a point are smoothed there (0: never): the points around the
+  // kink move along their generatrices towards their neighbours as far as their deposit stays in the window.
+  double smoothKinkDeg = 0.0;
 };
 
 // A meshed tube decomposed into layers: layer 0 is the base edge, each later one a deposit above it.
@@ -36,6 +39,7 @@ struct TubeLayers {
   std::vector<std::vector<char>> kept;  // per point: on the part (a truncated layer keeps fewer)
   int constantLayers = 0;               // layers at delta from the one below (after them: the modulated end)
   double radiusMin = 0.0;               // the tube's narrowest mean radius about the guide, mm
+  int smoothedPoints = 0;               // points moved to smooth kinks
   std::vector<std::string> warnings;
 };
 

@@ -160,7 +160,8 @@ Heights measureHeights(const std::vector<PathPoint>& pts, const std::vector<int>
   return out;
 }
 
-// Segments with the arc on across them longer than J, or changing sub-path (see "Verdict").
+// Segments with the arc on across them longer than J within a sub-path (see "Verdict"). A new sub-path
+// starts its own arc: the program travels to it with the arc off, so its first segment is no jump.
 std::vector<bool> jumps(const std::vector<PathPoint>& pts, double beadWidth)
 {
   std::vector<std::pair<int, double>> lengths;  // (sub-path, arc-on segment length)
@@ -181,7 +182,7 @@ std::vector<bool> jumps(const std::vector<PathPoint>& pts, double beadWidth)
   };
   for (size_t i = 1; i < pts.size(); ++i) {
     if (!pts[i].arc || !pts[i - 1].arc) continue;
-    out[i] = pts[i].path != pts[i - 1].path || (pts[i].p - pts[i - 1].p).norm() > limitOf(pts[i].path);
+    out[i] = pts[i].path == pts[i - 1].path && (pts[i].p - pts[i - 1].p).norm() > limitOf(pts[i].path);
   }
   return out;
 }

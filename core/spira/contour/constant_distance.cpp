@@ -120,6 +120,7 @@ ConstantDistanceLayers constantDistanceLayers(const TubeSurface& surface,
       points[size_t(i)] = surface.at(t[size_t(i)], v[size_t(i)]);
       if (!points[size_t(i)].allFinite()) return out;  // the surface has a hole there (a meshed tube's end)
     }
+    if (s.adjustLayer) s.adjustLayer(t, points, below);
     out.t.push_back(std::move(t));
     out.points.push_back(std::move(points));
     if (s.onLayer) s.onLayer(out.t.size());

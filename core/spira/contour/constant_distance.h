@@ -11,6 +11,9 @@ namespace spira {
 // it. 004_bd0df31205c0c3c0.txt Eq. 2.22-2.25.
 struct TubeSurface {
   std::function<Vec3(double t, double v)> at;
+  // The unit normal at S(t, v), pointing away from the guide, where the surface knows it better than
+  // finite differences (a mesh: its normals interpolated across the hit face); empty otherwise.
+  std::function<Vec3(double t, double v)> normal;
   double t0 = 0.0;
   double tEnd = 0.0;  // how far the surface may be followed: past the part's nominal end, to finish it
 };
@@ -25,6 +28,10 @@ struct ConstantDistanceSettings {
   // Called after each layer with the number of layers so far (the first included): progress, and
   // cancellation by throwing.
   std::function<void(size_t layers)> onLayer;
+  // May move a new layer's points along their generatrices (t) before the next layer is laid on it, e.g.
+  // to smooth a kink; `points` must stay S(t, v_i).
+  std::function<void(std::vector<double>& t, std::vector<Vec3>& points, const std::vector<Vec3>& below)>
+      adjustLayer;
 };
 
 struct ConstantDistanceLayers {

@@ -6,6 +6,8 @@
 
 #include "spira/base/error.h"
 #include "spira/contour/guided_tube.h"
+#include "spira/contour/surface_point.h"
+#include "spira/mesh/corner_normals.h"
 #include "spira/mesh/ray_bvh.h"
 
 namespace spira {
@@ -13,10 +15,25 @@ namespace {
 
 // The mesh and its tree, shared by the surface's copies.
 struct Hull {
-  explicit Hull(const TriangleMesh& m) : mesh(m), tree(mesh) {}
+  explicit Hull(const TriangleMesh& m) : mesh(m), tree(mesh), corners(cornerNormals(mesh)) {}
   TriangleMesh mesh;
   RayBvh tree;
+  std::vector<Vec3> corners;
 };
+
+// The barycentric weights of p in face f.
+Vec3 barycentric(const TriangleMesh& mesh, int f, const Vec3& p)
+{
+  const Face& face = mesh.faces[size_t(f)];
+  const Vec3 &a = mesh.vertices[size_t(face[0])], &b = mesh.vertices[size_t(face[1])],
+             &c = mesh.vertices[size_t(face[2])];
+  const Vec3 e1 = b - a, e2 = c - a, w = p - a;
+  const double d11 = e1.dot(e1), d12 = e1.dot(e2), d22 = e2.dot(e2), w1 = w.dot(e1), w2 = w.dot(e2);
+  const double den = d11 * d22 - d12 * d12;
+  if (!(std::abs(den) > 0.0)) return Vec3(1.0, 0.0, 0.0);
+  const double v = (d22 * w1 - d12 * w2) / den, u = (d11 * w2 - d12 * w1) / den;
+  return Vec3(1.0 - v - u, v, u);
+}
 
 }  // namespace
 
@@ -31,12 +48,22 @@ TubeSurface meshedTube(const TriangleMesh& mesh, std::function<Vec3(double)> gui
   TubeSurface tube;
   tube.t0 = t0;
   tube.tEnd = t1;
-  tube.at = [unit, guide = std::move(guide), hull, reach](double t, double v) {
+  tube.at = [unit, guide, hull, reach](double t, double v) {
     const Vec3 centre = guide(t);
     const Vec3 across = unit.at(t, v) - centre;
     const RayHit hit = hull->tree.firstHit(centre, across, 0.0, reach);
     constexpr double kMissed = std::numeric_limits<double>::quiet_NaN();
     return hit.face < 0 ? Vec3(kMissed, kMissed, kMissed) : Vec3(centre + hit.distance * across);
+  };
+  tube.normal = [unit, guide, hull, reach](double t, double v) {
+    const Vec3 centre = guide(t);
+    const Vec3 across = unit.at(t, v) - centre;
+    const RayHit hit = hull->tree.firstHit(centre, across, 0.0, reach);
+    if (hit.face < 0) return Vec3(across.normalized());
+    const Vec3 p = centre + hit.distance * across;
+    const SurfacePoint at{p, hit.face, barycentric(hull->mesh, hit.face, p)};
+    Vec3 n = surfaceNormalAt(hull->mesh, hull->corners, at);
+    return Vec3(n.dot(across) < 0.0 ? -n : n);
   };
   bool seen = false;
   for (int k = 0; k < 16 * 8 && !seen; ++k)

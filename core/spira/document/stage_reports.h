@@ -219,7 +219,13 @@ struct SpiralStageReport {
   double pathLength = 0.0, maxJump = 0.0, seamRiseMax = 0.0, buildTime = 0.0;
   std::optional<std::int64_t> dwells;  // with a dwell (path/dwell.h): how many, and their waits
   std::optional<double> dwellTime;     // s, included in buildTime
-  SecondsPerStep timings;              // per planning stage, with "total"
+  // Laid in layers (decomposer.constant_distance): each layer point's distance to the layer below, mm, the
+  // largest turning angle within a layer (overall and per layer), the arcs, the path and how it ended.
+  std::optional<double> deltaMin, deltaMax, maxKinkDeg;
+  std::optional<std::vector<double>> layerKinksDeg;
+  std::optional<std::int64_t> arcStarts;
+  std::optional<std::string> layerOutput, layerEnd;
+  SecondsPerStep timings;  // per planning stage, with "total"
   std::vector<std::string> warnings;
   std::int64_t pathCount = 1;
   std::vector<PathRecord> paths;
@@ -244,7 +250,11 @@ struct SpiralStageReport {
     io.nullable("closure_point", s.closurePoint), io.optional("closure_distance", s.closureDistance);
     io("path_length", s.pathLength), io("max_jump", s.maxJump), io("seam_rise_max", s.seamRiseMax);
     io("build_time_s", s.buildTime), io.optional("n_dwells", s.dwells);
-    io.optional("dwell_time_s", s.dwellTime), io("timings_s", s.timings), io("warnings", s.warnings);
+    io.optional("dwell_time_s", s.dwellTime), io.optional("delta_min", s.deltaMin);
+    io.optional("delta_max", s.deltaMax), io.optional("max_kink_deg", s.maxKinkDeg);
+    io.optional("layer_kinks_deg", s.layerKinksDeg), io.optional("n_arc_starts", s.arcStarts);
+    io.optional("layer_output", s.layerOutput), io.optional("part_end", s.layerEnd);
+    io("timings_s", s.timings), io("warnings", s.warnings);
     io("n_paths", s.pathCount), io("paths", s.paths), io.optional("branching", s.branching);
   }
 };

@@ -81,6 +81,9 @@ void readJson(Comparison& c, const fs::path& file)
     s.outside = static_cast<size_t>(count(e, "points_outside_window", where));
     s.revolutions = count(e, "revolutions", where);
     s.paths = static_cast<size_t>(count(e, "n_paths", where));
+    s.arcStarts = count(e, "n_arc_starts", where);
+    s.maxKinkDeg =
+        e.contains("max_kink_deg") && !e["max_kink_deg"].is_null() ? figure(e, "max_kink_deg", where) : -1.0;
     s.runtime = figure(e, "runtime_s", where);
   }
 }

@@ -192,6 +192,17 @@ SpiralStageReport spiralStageReport(const PlanOutput& plan, const std::string& s
     r.dwells = static_cast<std::int64_t>(plan.process.dwells);
     r.dwellTime = plan.process.dwellTime;
   }
+  if (plan.layers) {
+    const LayerStats& l = *plan.layers;
+    r.layers = l.layers;
+    r.deltaMin = l.deltaMin;
+    r.deltaMax = l.deltaMax;
+    r.maxKinkDeg = l.maxKinkDeg;
+    r.layerKinksDeg = l.kinkDeg;
+    r.arcStarts = l.arcStarts;
+    r.layerOutput = l.output;
+    r.layerEnd = l.end;
+  }
   r.timings = secondsOf(plan.timings, true);
   r.warnings = plan.warnings;
   r.pathCount = plan.paths.empty() ? 1 : static_cast<std::int64_t>(plan.paths.size());

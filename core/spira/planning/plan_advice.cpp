@@ -144,9 +144,12 @@ PlanAdvice adviseChange(const PluginRegistry& registry, const PlanRequest& reque
     const auto [change, flags] = windowText(*window);
     if (trial.plans(trial.with(request.decomposerId, window), change)) return done(change, flags);
   }
+  // The default strategy first: it plans the widest range of parts, and the trials are few.
   std::vector<std::string> others;
   for (const Plugin* p : registry.ofKind(PluginKind::Decomposer))
     if (p->id() != request.decomposerId) others.push_back(p->id());
+  std::stable_partition(others.begin(), others.end(),
+                        [](const std::string& id) { return id == kDefaultDecomposerId; });
   for (const std::string& id : others) {
     if (trial.exhausted()) break;
     const std::string change = "use the " + strategyName(id) + " strategy";

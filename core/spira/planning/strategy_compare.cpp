@@ -58,6 +58,11 @@ StrategyOutcome planWith(const PluginRegistry& registry, const PlanRequest& requ
     s.generatrixLengthMax = plan.spiral.report.generatrixLengthMax;
     s.revolutions = plan.spiral.report.nRevolutions;
     s.paths = plan.paths.size();
+    s.arcStarts = plan.layers ? plan.layers->arcStarts : int(plan.paths.size());
+    if (plan.layers) {
+      s.revolutions = plan.layers->output == "layers" ? plan.layers->layers : s.revolutions;
+      s.maxKinkDeg = plan.layers->maxKinkDeg;
+    }
     for (const TrajectoryPoint& p : plan.spiral.trajectory.points) {
       s.points.push_back(p.position);
       s.heights.push_back(p.height);
@@ -97,6 +102,7 @@ StrategyOutcome planar(const PlanRequest& request, const Comparison& c, Progress
     s.ran = true;
     s.revolutions = b.layers;
     s.paths = static_cast<size_t>(b.layers);
+    s.arcStarts = b.layers;
     for (const PlanarPoint& p : b.points) {
       s.points.push_back(p.position);
       s.heights.push_back(p.height);
@@ -156,6 +162,8 @@ nlohmann::json comparisonJson(const Comparison& comparison)
                     {"points_outside_window", s.outside},
                     {"revolutions", s.revolutions},
                     {"n_paths", s.paths},
+                    {"n_arc_starts", s.arcStarts},
+                    {"max_kink_deg", orNull(s.ran && s.maxKinkDeg >= 0.0, s.maxKinkDeg)},
                     {"runtime_s", s.runtime}});
   }
   return {{"h", comparison.h},

@@ -21,8 +21,11 @@ struct StrategyOutcome {
   double generatrixLengthMin = 0.0, generatrixLengthMax = 0.0;   // CTPP only
   double depositMin = 0.0, depositMax = 0.0, depositMean = 0.0;  // mm, over every point
   size_t outside = 0;                                            // points whose deposit is outside the window
-  int revolutions = 0;       // CTPP: revolutions of all sub-paths; planar: layers
-  size_t paths = 0;          // CTPP sub-paths (1 for a mono-branch part)
+  int revolutions = 0;  // CTPP: revolutions of all sub-paths; planar: layers
+  size_t paths = 0;     // CTPP sub-paths (1 for a mono-branch part)
+  int arcStarts = 0;    // arcs the path is laid in: sub-paths and pieces (planar: layers)
+  // Laid in layers (constant distance): the largest turning angle within a layer, deg; -1: not measured.
+  double maxKinkDeg = -1.0;
   std::vector<Vec3> points;  // the path (CTPP) or the layers' contour points (planar)
   std::vector<double> heights;
 };
@@ -40,7 +43,8 @@ struct Comparison {
 Comparison compareStrategies(const PluginRegistry& registry, const PlanRequest& request, Progress& progress);
 
 // DIR/compare.json: the window and, per strategy, feasible, failure, generatrix lengths and their
-// spread, deposit min/max/mean, points outside the window, revolutions, sub-paths and runtime.
+// spread, deposit min/max/mean, points outside the window, revolutions, sub-paths, arc starts, the
+// largest layer kink (constant distance) and runtime.
 nlohmann::json comparisonJson(const Comparison& comparison);
 // DIR/compare.csv: strategy,x,y,z,height per point (mm).
 std::string comparisonCsv(const Comparison& comparison);

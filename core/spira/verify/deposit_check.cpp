@@ -165,9 +165,11 @@ class HeightProbe {
     return L_.run[end] != L_.run[i] || L_.arc[i] - L_.arc[end] >= s_.beadWidth;
   }
 
-  // Material laid with the build direction turned away from the point's lies across the part's
-  // hollow (the far side of a ring around a pole), not over or under the point.
-  bool sameSide(const Column& c, size_t j) const { return path_.points[j].build.dot(c.b) > 0.0; }
+  // Material laid with the build direction turned away from the point's, by more than 120 degrees,
+  // lies across the part's hollow (the far side of a ring around a pole), not over or under the point.
+  // Nearer square to it, it is the other arm of a sharp turn of the same wall (a constant-distance
+  // layer's kink), which folds over the point.
+  bool sameSide(const Column& c, size_t j) const { return path_.points[j].build.dot(c.b) > -0.5; }
 
   // Depth of the segment where it crosses the plane normal to the travel direction, within half a
   // bead of the wall; kInf where it does not.

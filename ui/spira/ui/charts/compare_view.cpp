@@ -339,7 +339,7 @@ void CompareView::showSide(int side)
     }
     // One spiral reads as a line; layer contours (and several sub-paths, whose joins the file
     // does not mark) as dots.
-    asLine = s.kind == "ctpp" && s.paths <= 1 && n > 1;
+    asLine = s.kind == "ctpp" && s.paths <= 1 && s.arcStarts <= 1 && n > 1;
     if (asLine) {
       cells->InsertNextCell(static_cast<int>(n));
       for (vtkIdType i = 0; i < n; ++i) cells->InsertCellPoint(i);
@@ -357,12 +357,19 @@ void CompareView::showSide(int side)
               .arg(loc.toString(s.depositMin, 'f', 3), loc.toString(s.depositMax, 'f', 3),
                    loc.toString(s.depositMean, 'f', 3), loc.toString(static_cast<qulonglong>(s.outside)),
                    loc.toString(static_cast<qulonglong>(s.points.size())));
-      summary += s.kind == "planar" ? tr("<br>%1 layers").arg(s.revolutions)
-                                    : tr("<br>%1 revolutions, %2 sub-path(s), generatrices %3 .. %4 mm")
-                                          .arg(s.revolutions)
-                                          .arg(static_cast<qulonglong>(s.paths))
-                                          .arg(loc.toString(s.generatrixLengthMin, 'f', 1),
-                                               loc.toString(s.generatrixLengthMax, 'f', 1));
+      if (s.kind == "planar")
+        summary += tr("<br>%1 layers").arg(s.revolutions);
+      else if (s.maxKinkDeg >= 0.0)
+        summary += tr("<br>%1 layers at a constant distance, layer kink up to %2 deg")
+                       .arg(s.revolutions)
+                       .arg(loc.toString(s.maxKinkDeg, 'f', 1));
+      else
+        summary += tr("<br>%1 revolutions, %2 sub-path(s), generatrices %3 .. %4 mm")
+                       .arg(s.revolutions)
+                       .arg(static_cast<qulonglong>(s.paths))
+                       .arg(loc.toString(s.generatrixLengthMin, 'f', 1),
+                            loc.toString(s.generatrixLengthMax, 'f', 1));
+      summary += tr("; %n arc start(s)", nullptr, s.arcStarts);
       if (s.runtime > 0.0) summary += tr("; planned in %1 s").arg(loc.toString(s.runtime, 'f', 2));
     }
   }
