@@ -28,6 +28,7 @@
 #include "spira/plugin/strategy_name.h"
 #include "spira/robotcell/cell_file.h"
 #include "spira/robotcell/robot_cell.h"
+#include "substrate_flag.h"
 
 namespace fs = std::filesystem;
 
@@ -108,6 +109,7 @@ int cmdPlan(const std::vector<std::string>& argv)
     std::cout
         << "usage: spira-cli plan PART -o DIR [--strategy isovalue] [--lower-loop N] [--substrate-z Z] "
            "[--drop] [--level-base]\n"
+           "                       [--substrate FILE|cylinder:R[,AXIS[,LENGTH]]]\n"
            "       spira-cli plan PROJECT.spira -o DIR [--save]\n"
            "                       [--no-mid-surface]\n"
            "                       [--cell CELL] [--keep-collisions] [--export krl|fanuc_tp] [--timing]\n"
@@ -129,11 +131,16 @@ int cmdPlan(const std::vector<std::string>& argv)
            "A saved project is planned as Spira plans it, with its part, placement, substrate, cell and\n"
            "settings (no other flags); --save stores the plan in the project (export it with\n"
            "'spira-cli export PROJECT.spira').\n\n"
-        << kPlacementHelp << paramFlagsHelp(targets);
+        << kPlacementHelp << kSubstrateFlagHelp << paramFlagsHelp(targets);
     return kExitOk;
   }
   const std::string outDir = args.takeOption("-o");
   partFlags.take(args);
+  partFlags.substrate = args.takeOption("--substrate");
+  if (!partFlags.substrate.empty() && partFlags.placement.drop)
+    throw UsageError(
+        "--drop moves the part onto the plate, and --substrate builds it on another surface",
+        "leave out --drop: with --substrate the part's base edge must already lie on the substrate");
   const bool timing = args.takeSwitch("--timing");
   const bool keepCollisions = args.takeSwitch("--keep-collisions");
   args.rest = takeParamFlags(args.rest, targets);

@@ -31,7 +31,15 @@ TriangleMesh makeSample(const std::string& name)
     const double bend = 50.0, r = 15.0, angle = 0.5 * 3.14159265358979323846;
     return makeBentTube(bend, r, angle, segmentsForEdge(r, kEdge), static_cast<int>(bend * angle / kEdge));
   }
-  throw InputError("unknown sample '" + name + "'", "use one of: open-cylinder, dome, cone, bent-tube");
+  if (name == "torus-on-pipe") {
+    // The source's feature on a 64 mm pipe (004_bd0df31205c0c3c0.txt §2.2.3): the same quarter torus
+    // from where it leaves the cylinder of radius 32 about y (plan it with --substrate cylinder:32,y).
+    const double bend = 50.0, r = 15.0, angle = 0.5 * 3.14159265358979323846;
+    return makeTorusOnCylinder(bend, r, 32.0, angle, segmentsForEdge(r, kEdge),
+                               static_cast<int>(bend * angle / kEdge));
+  }
+  throw InputError("unknown sample '" + name + "'",
+                   "use one of: open-cylinder, dome, cone, bent-tube, torus-on-pipe");
 }
 
 }  // namespace
@@ -43,7 +51,9 @@ int cmdSample(const std::vector<std::string>& argv)
     std::cout
         << "usage: spira-cli sample NAME -o FILE\n\n"
            "Writes a sample part made in code: open-cylinder (R 50, H 100 mm), dome (hemisphere R 60 mm),\n"
-           "cone (R 60 to 40, H 100 mm), bent-tube (quarter torus, bend R 50, tube r 15 mm).\n"
+           "cone (R 60 to 40, H 100 mm), bent-tube (quarter torus, bend R 50, tube r 15 mm),\n"
+           "torus-on-pipe (the same bend added onto a pipe of radius 32 mm about y: plan it with\n"
+           "--substrate cylinder:32,y).\n"
            "The format follows FILE's extension (.stl, .obj, .ply).\n";
     return kExitOk;
   }

@@ -5,6 +5,7 @@
 #include <iostream>
 
 #include "spira/plugin/strategy_name.h"
+#include "substrate_flag.h"
 
 namespace fs = std::filesystem;
 
@@ -55,7 +56,9 @@ PlannedPart planPartFile(const PluginRegistry& registry, const std::string& file
   snapshot.part = partOf(std::move(imported), file, flags.placement.lowerLoop);
   Substrate plate;
   plate.planeZ = flags.placement.substrateZ;
-  snapshot.substrate = std::make_shared<const Substrate>(std::move(plate));
+  snapshot.substrate = std::make_shared<const Substrate>(
+      flags.substrate.empty() ? std::move(plate)
+                              : substrateFromFlag(flags.substrate, flags.importFlags, progress));
   snapshot.settings = std::make_shared<const PlanSettings>(PlanSettings{
       decomposerIdOf(flags.strategy), PlanSettings::kDefaultClosureFinder, flags.planFlags.values});
 
@@ -69,6 +72,10 @@ PlannedPart planPartFile(const PluginRegistry& registry, const std::string& file
   if (out.placed.levelled)
     report["levelled_base"] = {{"cut_z_mm", out.placed.cutZ}, {"removed_mm", out.placed.removed}};
   report["timings_s"]["import"] = importSeconds;
+  if (snapshot.substrate->kind == Substrate::Kind::Mesh)
+    report["substrate"] = {{"kind", "mesh"},
+                           {"name", snapshot.substrate->meshName},
+                           {"triangles", snapshot.substrate->mesh->faces.size()}};
   return out;
 }
 

@@ -26,6 +26,7 @@ struct PartPlanFlags {
   PartPlacement placement;
   std::string strategy;
   bool noMidSurface = false;
+  std::string substrate;  // --substrate (plan only): empty for the plate
 };
 
 // A part file planned: the document it was planned as, the plan and its report.json (with the

@@ -135,6 +135,7 @@ DecomposeResult ConstantDistanceDecomposer::decomposeChecked(const DecomposeInpu
   path.stagger = staggerOf(values.getString("stagger"));
   path.staggerAngle = values.internal(schema_, "stagger_angle");
   path.window = spiral;
+  path.substrate = input.substrate && !input.substrate->isPlane() ? input.substrate : nullptr;
   SubProgress pathProgress(progress, 0.8, 1.0, "path through the layers");
   LaidLayers laid = layPath(layers, path, pathProgress);
   laid.stats.output = values.getString("output");

@@ -140,9 +140,9 @@ void layLayers(const TubeLayers& L, const LayerPathSettings& s, Builder& b, size
   }
 }
 
-// The first layer's height at each point as a deposit on the substrate plane is measured: along the
-// build direction (the wall's direction across the layer) down to the plane.
-std::vector<double> firstLayerHeights(const TubeLayers& L)
+// The first layer's height at each point as a deposit on the substrate is measured: along the build
+// direction (the wall's direction across the layer) down to the plane, or to the substrate mesh.
+std::vector<double> firstLayerHeights(const TubeLayers& L, const SubstrateSurface* substrate, double h)
 {
   const int n = int(L.top.size());
   std::vector<double> d = layerDistances(L.points[1], L.points[0]);
@@ -151,7 +151,9 @@ std::vector<double> firstLayerHeights(const TubeLayers& L)
     Vec3 build = normalAt(L, L.t[1][size_t(i)], i).cross(along).normalized();
     const Vec3 rise = L.points[1][size_t(i)] - L.points[0][size_t(i)];
     if (build.dot(rise) < 0.0) build = -build;
-    if (build.z() >= 0.1) d[size_t(i)] = rise.z() / build.z();
+    const double depth = substrate ? substrate->depthBelow(L.points[1][size_t(i)], build, 3.0 * h, 10.0 * h)
+                                   : (build.z() >= 0.1 ? rise.z() / build.z() : d[size_t(i)]);
+    if (std::isfinite(depth) && depth > 0.0) d[size_t(i)] = depth;
   }
   return d;
 }
@@ -177,13 +179,13 @@ double levelToT(const TubeLayers& L, size_t k, int i, double rise, double step)
 }
 
 // Level space: generatrix i climbs, layer by layer, the deposit measured at i.
-std::vector<std::vector<double>> levels(const TubeLayers& L)
+std::vector<std::vector<double>> levels(const TubeLayers& L, const LayerPathSettings& s)
 {
   const size_t n = L.top.size();
   std::vector<std::vector<double>> z(n, std::vector<double>{0.0});
   for (size_t k = 1; k < L.t.size(); ++k) {
     const std::vector<double> d =
-        k == 1 ? firstLayerHeights(L) : layerDistances(L.points[k], L.points[k - 1]);
+        k == 1 ? firstLayerHeights(L, s.substrate, s.window.h) : layerDistances(L.points[k], L.points[k - 1]);
     for (size_t i = 0; i < n; ++i) z[i].push_back(z[i].back() + std::max(d[i], 1e-9));
   }
   return z;
@@ -227,7 +229,7 @@ SpiralReport laySpiral(const TubeLayers& L, const LayerPathSettings& s, Builder&
                        Progress& progress)
 {
   const int n = int(L.top.size());
-  const std::vector<std::vector<double>> z = levels(L);
+  const std::vector<std::vector<double>> z = levels(L, s);
   // The seam where the tube's generatrices lean least along the layers, as on any other part: there a
   // revolution's first point lands over the one below it, not beside the seam's climb.
   Generatrices real;
@@ -417,6 +419,12 @@ LaidLayers layPath(const TubeLayers& L, const LayerPathSettings& s, Progress& pr
   endTangents(b.path);
   r.normalsFlipped = orientBuildDirection(b.path, b.steps);
   computeDepositHeights(b.path, b.steps, firstRing);
+  if (s.substrate)
+    for (size_t q = 0; q < firstRing; ++q) {
+      TrajectoryPoint& p = b.path.points[q];
+      const double depth = s.substrate->depthBelow(p.position, p.build, 3.0 * s.window.h, 10.0 * s.window.h);
+      if (std::isfinite(depth)) p.height = depth;
+    }
   measureOnLayerBelow(b.path, firstRing, int(L.top.size()), s.window.h);
   r.lengthCriterion = lengthCriterion(L, s.window.hMax - s.window.hMin);
   r.thesisLengthCriterion = r.lengthCriterion;

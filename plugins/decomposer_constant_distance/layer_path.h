@@ -22,6 +22,9 @@ struct LayerPathSettings {
   Stagger stagger = Stagger::Golden;
   double staggerAngle = 0.5235987755982988;  // rad, for Stagger::Constant
   SpiralSettings window;                     // nominal height, window, start-up and termination
+  // The surface under the base edge when it is not the plane there (a pipe, a curved plate); nullptr:
+  // the plane. The first beads are measured down to it.
+  const SubstrateSurface* substrate = nullptr;
 };
 
 struct LaidLayers {

@@ -33,13 +33,15 @@ std::string pointText(const Vec3& p)
 }
 
 // Every ray across the guide inside the part meets the wall, and the tube is wider than a layer is high.
-double checkGuideInside(const TubeSurface& tube, const std::function<Vec3(double)>& guide, double length,
-                        double delta)
+// Checked between the base edge and the upper edge, where the wall goes all round (a feature's base on a
+// pipe is slanted across the guide).
+double checkGuideInside(const TubeSurface& tube, const std::function<Vec3(double)>& guide, double from,
+                        double to, double delta)
 {
   double narrowest = std::numeric_limits<double>::infinity();
   constexpr int kSamples = 64, kAround = 8;
   for (int k = 0; k <= kSamples; ++k) {
-    const double t = length * (0.05 + 0.9 * k / kSamples);
+    const double t = from + (to - from) * (0.02 + 0.96 * k / kSamples);
     double sum = 0.0;
     for (int j = 0; j < kAround; ++j) {
       const Vec3 p = tube.at(t, angleOf(j, kAround));
@@ -321,10 +323,16 @@ TubeLayers layTubeLayers(const TriangleMesh& mesh, const Polyline& centreLine, d
   const double ext = reach;
   progress.report(0.0, "tube surface");
   const TubeSurface tube = meshedTube(mesh, L.guide, -ext, length + ext, reach);
-  L.radiusMin = checkGuideInside(tube, L.guide, length, s.delta);
-  progress.checkCancel();
-  const std::vector<double> base = baseLayer(tube, s.points, -ext, 0.5 * length);
-  L.top = topLayer(tube, s.points, 0.5 * length, length + ext);
+  std::vector<double> base;
+  try {
+    base = baseLayer(tube, s.points, -ext, 0.5 * length);
+    L.top = topLayer(tube, s.points, 0.5 * length, length + ext);
+  } catch (const InputError& e) {
+    throw InputError(
+        "the guide curve leaves the part: " + std::string(e.what()),
+        "give the tube's centre line with --guide (base end first), or leave --guide empty to take it "
+        "from the part");
+  }
   const double topMax = *std::max_element(L.top.begin(), L.top.end());
   const double topMin = *std::min_element(L.top.begin(), L.top.end());
   const double baseMax = *std::max_element(base.begin(), base.end());
@@ -332,6 +340,8 @@ TubeLayers layTubeLayers(const TriangleMesh& mesh, const Polyline& centreLine, d
     throw InputError(
         "the tube is shorter than one layer along its guide (" + mm(topMin - baseMax, 2) + " mm)",
         "plan a part at least one deposit high");
+  L.radiusMin = checkGuideInside(tube, L.guide, baseMax, topMin, s.delta);
+  progress.checkCancel();
   L.surface = continuedPastTop(tube, L.guide, L.top, topMax + 2.0 * (topMax - tube.t0) + 10.0 * s.delta);
 
   ConstantDistanceSettings cd;

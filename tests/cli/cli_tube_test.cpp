@@ -106,5 +106,38 @@ TEST(CliTube, BadTubeInputIsRefusedWithExitCode3AndNothingWritten)
   EXPECT_NE(r.err.find("truncate"), std::string::npos) << r.err;
 }
 
+// The source's torus feature on a 64 mm pipe: planned on the pipe, its first beads measured down to it.
+TEST(CliTube, AFeatureIsPlannedOnAPipe)
+{
+  TempDir dir;
+  const fs::path part = dir / "feature.stl";
+  ASSERT_EQ(runCli({"sample", "torus-on-pipe", "-o", part.string()}).exitCode, 0);
+  std::vector<std::string> args = tubePlan(part, dir / "pipe");
+  args[7] = "2", args[9] = "1.8", args[11] = "2.2";
+  args.insert(args.end(), {"--substrate", "cylinder:32,y"});
+  const CliRun r = runCli(args);
+  ASSERT_EQ(r.exitCode, 0) << r.err << r.out;
+  const nlohmann::json report = nlohmann::json::parse(std::ifstream(dir / "pipe" / "report.json"));
+  EXPECT_EQ(report.at("substrate").at("kind"), "mesh");
+  EXPECT_TRUE(report.at("feasible").get<bool>());
+  EXPECT_GE(report.at("deposit_check").at("height_min").get<double>(), 1.8 - 0.01);
+
+  // On the plate instead, its base edge lies 22 to 31 mm up and is not level.
+  const CliRun plate = runCli(tubePlan(part, dir / "plate"));
+  EXPECT_EQ(plate.exitCode, kBadInput) << plate.err;
+
+  // A pipe it does not touch, or a malformed one, is refused, nothing written.
+  args = tubePlan(part, dir / "thin");
+  args.insert(args.end(), {"--substrate", "cylinder:30,y"});
+  const CliRun off = runCli(args);
+  EXPECT_EQ(off.exitCode, kBadInput) << off.err;
+  EXPECT_NE(off.err.find("does not stand on the substrate mesh"), std::string::npos) << off.err;
+  EXPECT_FALSE(fs::exists(dir / "thin" / "trajectory.csv"));
+  args.back() = "cylinder:32,w";
+  EXPECT_EQ(runCli(args).exitCode, 2);
+  args.back() = (dir / "missing.stl").string();
+  EXPECT_EQ(runCli(args).exitCode, kBadInput);
+}
+
 }  // namespace
 }  // namespace spira::test

@@ -257,3 +257,57 @@ TEST(DepositCheck, SubPathsAreSeparateArcsOnEarlierMaterial)
 
 }  // namespace
 }  // namespace spira
+
+namespace spira {
+namespace {
+
+// A flat plate as a mesh, `tilt` (rad) about y, through (0, 0, z0): a square of 2 x 80 triangles.
+TriangleMesh plateMesh(double z0, double tilt = 0.0)
+{
+  TriangleMesh m;
+  const double half = 80.0;
+  for (int i = 0; i < 4; ++i) {
+    const double x = (i & 1) ? half : -half, y = (i & 2) ? half : -half;
+    m.vertices.emplace_back(x * std::cos(tilt), y, z0 + x * std::sin(tilt));
+  }
+  m.faces.push_back({0, 1, 3});
+  m.faces.push_back({0, 3, 2});
+  return m;
+}
+
+DepositCheckReport checkOn(const Trajectory& t, const TriangleMesh& substrate)
+{
+  DepositCheckSettings s = window();
+  s.substrate = std::make_shared<const SubstrateSurface>(SubstrateSurface::mesh(substrate));
+  s.substrateZ = -1000.0;  // the plane is not used when the substrate is a mesh
+  NullProgress progress;
+  return checkDeposits(t, nullptr, s, progress);
+}
+
+// A substrate mesh stands for the plate: the first ring measured down to it, as to the plane.
+TEST(DepositCheckOnAMesh, AFlatMeshGivesThePlatesHeights)
+{
+  const DepositCheckReport r = checkOn(cylinderSpiral(5), plateMesh(0.0));
+  EXPECT_TRUE(r.feasible) << r.summary();
+  EXPECT_NEAR(r.heightMin, 1.5, 1e-9);
+  EXPECT_NEAR(r.heightMax, 2.5 - 1.0 / kPointsPerRing, 1e-9);
+}
+
+// Tilted by 1 deg about y through z = 0, the plate lies 30 sin(1 deg) = 0.52 mm higher under the ring's
+// +x side and as much lower under its -x side: the first ring's heights spread by that much.
+TEST(DepositCheckOnAMesh, ATiltedMeshMeasuresTheFirstRingDownToItself)
+{
+  const double tilt = degToRad(1.0);
+  const DepositCheckReport r = checkOn(cylinderSpiral(5), plateMesh(0.0, tilt));
+  EXPECT_NEAR(r.heightMin, 1.5 - kRadius * std::tan(tilt), 0.01);
+  // Raised by 1 mm, the plate is under the first ring's start: below the deposit there.
+  const DepositCheckReport under = checkOn(cylinderSpiral(5), plateMesh(1.6));
+  EXPECT_FALSE(under.feasible);
+  EXPECT_GT(under.counts[int(DepositDefect::BelowDeposit)] + under.counts[int(DepositDefect::Thin)], 0u);
+  // Far below, nothing supports the first ring.
+  const DepositCheckReport far = checkOn(cylinderSpiral(5), plateMesh(-30.0));
+  EXPECT_GT(far.counts[int(DepositDefect::Unsupported)], 0u);
+}
+
+}  // namespace
+}  // namespace spira

@@ -1,6 +1,8 @@
 #include "spira/mesh/mesh_primitives.h"
 
+#include <algorithm>
 #include <cmath>
+#include <functional>
 #include <string>
 
 #include "spira/base/error.h"
@@ -158,26 +160,22 @@ TriangleMesh makeOpenCone(double r0, double r1, double height, int segments, int
   return makeRevolved(profile, segments);
 }
 
-TriangleMesh makeBentTube(double bendRadius, double radius, double angle, int segments, int rings)
+namespace {
+
+// The torus section of makeBentTube whose profile point v starts at bend angle start(v).
+TriangleMesh torusSection(double bendRadius, double radius, const std::function<double(double)>& start,
+                          double angle, int segments, int rings)
 {
-  requireCounts(segments, rings);
-  requirePositive(radius, "radius");
-  require(std::isfinite(bendRadius) && bendRadius > radius,
-          "a bend radius of " + std::to_string(bendRadius) + " mm folds a tube of radius " +
-              std::to_string(radius) + " mm onto itself",
-          "give a bend radius larger than the tube's radius");
-  require(std::isfinite(angle) && angle > 0.0 && angle < 2.0 * kPi,
-          "a bend of " + std::to_string(angle) + " rad is not a section of a torus", "give 0 < angle < 2 pi");
   TriangleMesh m;
-  for (int a = 0; a <= rings; ++a) {
-    const double t = angle * a / rings;
-    const Vec3 outward(std::cos(t), 0.0, std::sin(t));
-    const Vec3 centre(bendRadius * std::cos(t) - bendRadius, 0.0, bendRadius * std::sin(t));
+  for (int a = 0; a <= rings; ++a)
     for (int k = 0; k < segments; ++k) {
       const double v = 2.0 * kPi * k / segments;
+      const double t0 = start(v);
+      const double t = t0 + (angle - t0) * a / rings;
+      const Vec3 outward(std::cos(t), 0.0, std::sin(t));
+      const Vec3 centre(bendRadius * std::cos(t) - bendRadius, 0.0, bendRadius * std::sin(t));
       m.vertices.push_back(centre + radius * (std::cos(v) * outward + std::sin(v) * Vec3::UnitY()));
     }
-  }
   const auto at = [segments](int a, int k) { return a * segments + (k % segments); };
   // Counter-clockwise seen from outside: the profile turns from +X (outward) to +Y as v grows and
   // the tube runs up +Z at its base.
@@ -187,6 +185,52 @@ TriangleMesh makeBentTube(double bendRadius, double radius, double angle, int se
       m.faces.push_back({at(a, k), at(a + 1, k + 1), at(a + 1, k)});
     }
   return m;
+}
+
+void requireBend(double bendRadius, double radius, double angle)
+{
+  requirePositive(radius, "radius");
+  require(std::isfinite(bendRadius) && bendRadius > radius,
+          "a bend radius of " + std::to_string(bendRadius) + " mm folds a tube of radius " +
+              std::to_string(radius) + " mm onto itself",
+          "give a bend radius larger than the tube's radius");
+  require(std::isfinite(angle) && angle > 0.0 && angle < 2.0 * kPi,
+          "a bend of " + std::to_string(angle) + " rad is not a section of a torus", "give 0 < angle < 2 pi");
+}
+
+}  // namespace
+
+TriangleMesh makeBentTube(double bendRadius, double radius, double angle, int segments, int rings)
+{
+  requireCounts(segments, rings);
+  requireBend(bendRadius, radius, angle);
+  return torusSection(
+      bendRadius, radius, [](double) { return 0.0; }, angle, segments, rings);
+}
+
+TriangleMesh makeTorusOnCylinder(double bendRadius, double radius, double cylinderRadius, double angle,
+                                 int segments, int rings)
+{
+  requireCounts(segments, rings);
+  requireBend(bendRadius, radius, angle);
+  // 004_bd0df31205c0c3c0.txt Eq. 2.17: where profile point v leaves the cylinder x^2 + z^2 = Rc^2.
+  const auto start = [=](double v) {
+    const double rho = bendRadius + radius * std::cos(v);
+    const double c =
+        (bendRadius * bendRadius - cylinderRadius * cylinderRadius + rho * rho) / (2.0 * bendRadius * rho);
+    return std::acos(std::clamp(c, -1.0, 1.0));
+  };
+  for (int k = 0; k < segments; ++k) {
+    const double v = 2.0 * kPi * k / segments;
+    const double rho = bendRadius + radius * std::cos(v);
+    const double c =
+        (bendRadius * bendRadius - cylinderRadius * cylinderRadius + rho * rho) / (2.0 * bendRadius * rho);
+    require(
+        std::abs(c) <= 1.0 && start(v) < angle,
+        "a cylinder of radius " + std::to_string(cylinderRadius) + " mm does not cut the bent tube across",
+        "give a cylinder that the tube's base leaves and its end lies outside of");
+  }
+  return torusSection(bendRadius, radius, start, angle, segments, rings);
 }
 
 TriangleMesh makeHemisphere(double radius, int segments, int rings)

@@ -33,6 +33,11 @@ TriangleMesh makeTubeSolid(double outerRadius, double innerRadius, double height
 // (g(t) = (R cos t - R, 0, R sin t), t from 0 to `angle` rad), with a circular profile of `radius`;
 // its base ring lies in z = 0 around +Z. `segments` round the profile, `rings` along the bend.
 TriangleMesh makeBentTube(double bendRadius, double radius, double angle, int segments, int rings);
+// The same bent tube added onto a cylinder x^2 + z^2 = cylinderRadius^2 (axis y): each profile point
+// starts where it leaves the cylinder (004_bd0df31205c0c3c0.txt Eq. 2.17-2.19, the source's torus feature
+// on a 64 mm pipe), so the base edge lies on the cylinder.
+TriangleMesh makeTorusOnCylinder(double bendRadius, double radius, double cylinderRadius, double angle,
+                                 int segments, int rings);
 // A closed regular tetrahedron (4 faces) centred on the origin, useful as the smallest watertight mesh.
 TriangleMesh makeTetrahedron(double edge);
 // `segments` (at least 3) so that the edges round a circle of `radius` are about `edge` long.

@@ -6,6 +6,7 @@
 #include "spira/base/error.h"
 #include "spira/base/progress.h"
 #include "spira/pipeline/plan_motion.h"
+#include "spira/pipeline/substrate_frame.h"
 #include "spira/planning/placement_frame.h"
 #include "spira/planning/plan_schemas.h"
 #include "spira/robotcell/robot_cell.h"
@@ -27,6 +28,8 @@ DocumentMotion solveDocumentMotion(const DocumentState& snapshot, const Trajecto
     }
     MotionSettings settings = motionSettingsFrom(readPlanSections(snapshot.settings->params));
     settings.substrateZ = substrateZ;
+    if (snapshot.substrate && snapshot.part)
+      settings.substrate = substrateInBuildFrame(*snapshot.substrate, snapshot.part->T_world_part);
     settings.resolveCollisions = resolveCollisions;
     settings.part = snapshot.part ? snapshot.part->mesh.get() : nullptr;
     // A tilted part was planned with the world's up: the cell holds it the same way, so the

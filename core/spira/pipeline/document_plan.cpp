@@ -12,6 +12,7 @@
 #include "spira/mesh/mesh_report.h"
 #include "spira/pipeline/document_motion.h"
 #include "spira/pipeline/plan_records.h"
+#include "spira/pipeline/substrate_frame.h"
 #include "spira/pipeline/thermal_stage.h"
 #include "spira/planning/placement_frame.h"
 #include "spira/planning/plan_advice.h"
@@ -88,6 +89,7 @@ DocumentPlan planDocument(const DocumentState& snapshot, const PluginRegistry& r
   PlanRequest request(mesh, report);
   // The build frame differs from the world by a translation; the substrate plane is stored in the world.
   request.substrateZ = snapshot.substrate->planeZ - snapshot.part->T_world_part.translation().z();
+  request.substrate = substrateInBuildFrame(*snapshot.substrate, snapshot.part->T_world_part);
   request.lowerLoopOverride = snapshot.part->lowerBoundaryOverride;
   if (!frame.identity() && request.lowerLoopOverride >= 0)
     request.lowerLoopOverride = PlacementFrame::loopIndexInBuild(

@@ -159,7 +159,10 @@ PlanMotion solvePlanMotion(const RobotCell& cell, const Trajectory& plan, const 
   DepositParams deposit;
   deposit.beadWidth = settings.beadWidth;
   CollisionScene scene;
-  scene.setSubstratePlane(Vec3(0, 0, settings.substrateZ), Vec3::UnitZ());
+  if (settings.substrate && !settings.substrate->isPlane())
+    scene.setSubstrateMesh(*settings.substrate->surfaceMesh());
+  else
+    scene.setSubstratePlane(Vec3(0, 0, settings.substrateZ), Vec3::UnitZ());
   const TorchCollisionChecker checker(plan, torchOf(cell.record().tool), deposit, std::move(scene));
   using Clock = std::chrono::steady_clock;
   const auto seconds = [](Clock::time_point from) {

@@ -1,7 +1,10 @@
 #pragma once
 
+#include <memory>
+
 #include "spira/base/progress.h"
 #include "spira/document/stage_reports.h"
+#include "spira/mesh/substrate_surface.h"
 #include "spira/mesh/triangle_mesh.h"
 #include "spira/motion/motion_params.h"
 #include "spira/motion/slowdown_deposit.h"
@@ -17,6 +20,8 @@ namespace spira {
 struct MotionSettings {
   double beadWidth = 5.2;   // mm: the deposit tube the torch must clear
   double substrateZ = 0.0;  // mm, part frame: the substrate plane (normal +Z)
+  // A substrate mesh (part frame) in place of the plane, for the torch's collisions; nullptr: the plane.
+  std::shared_ptr<const SubstrateSurface> substrate;
   // Tilt the torch about the travel direction where it would hit the deposit or the substrate
   // (the source's resolution); off: collisions are only reported.
   bool resolveCollisions = true;

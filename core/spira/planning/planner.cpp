@@ -15,6 +15,7 @@
 #include "spira/planning/branch_refusal.h"
 #include "spira/planning/plan_schemas.h"
 #include "spira/planning/stage_clock.h"
+#include "spira/planning/substrate_contact.h"
 
 namespace spira {
 namespace {
@@ -107,6 +108,11 @@ void extendToSubstrate(Generatrices& g, double substrateZ)
   }
 }
 
+bool onSubstrateMesh(const PlanRequest& request)
+{
+  return request.substrate && !request.substrate->isPlane();
+}
+
 // Closure point, generatrices, spiral and process channels of a part whose field is computed.
 void finishMonoBranch(const PluginRegistry& registry, const PlanRequest& request, const Settings& settings,
                       PlanOutput& out, StageClock& clock, Progress& progress)
@@ -132,6 +138,7 @@ void finishMonoBranch(const PluginRegistry& registry, const PlanRequest& request
   input.window = {settings.spiral.hMin, settings.spiral.hMax,
                   settings.spiral.heightTolerance * settings.spiral.h, settings.process.beadWidth};
   input.spiral = &settings.spiral;
+  input.substrate = request.substrate.get();
   SubProgress dp(progress, 0.35, 0.8, "generatrices");
   DecomposeResult decomposition = decomposer.decompose(input, settings.decomposerParams, dp);
   out.generatrices = std::move(decomposition.generatrices);
@@ -143,7 +150,7 @@ void finishMonoBranch(const PluginRegistry& registry, const PlanRequest& request
   } else {
     if (request.baseSupportGap > 0.0)
       extendBelowBase(out.generatrices, request.baseSupportGap);
-    else
+    else if (!onSubstrateMesh(request))
       extendToSubstrate(out.generatrices, request.substrateZ);
     clock.lap("decomposition");
     SubProgress sp(progress, 0.8, 0.95, "spiral");
@@ -174,6 +181,7 @@ DepositCheckSettings depositSettings(const PlanRequest& request, const Settings&
 {
   DepositCheckSettings d;
   d.substrateZ = request.substrateZ;
+  d.substrate = request.substrate;
   d.hMin = settings.spiral.hMin;
   d.hMax = settings.spiral.hMax;
   d.tolerance = settings.spiral.heightTolerance * settings.spiral.h;
@@ -247,8 +255,13 @@ PlanOutput planPart(const PluginRegistry& registry, const PlanRequest& request, 
   out.topology = findPartTopology(request.report, request.mesh, request.substrateZ, request.lowerLoopOverride,
                                   /*allowBranches=*/true);
   // Half the thinnest bead: a wider gap leaves the first ring in the air or under the plate.
-  requireOnSubstrate(out.topology, request.substrateZ, 0.5 * settings.spiral.hMin);
-  requireLevelBase(out.topology, request.substrateZ, 0.5 * settings.spiral.hMin);
+  if (onSubstrateMesh(request)) {
+    standOnSubstrateMesh(out.topology, request.report, request.mesh, *request.substrate,
+                         request.lowerLoopOverride, 0.5 * settings.spiral.hMin);
+  } else {
+    requireOnSubstrate(out.topology, request.substrateZ, 0.5 * settings.spiral.hMin);
+    requireLevelBase(out.topology, request.substrateZ, 0.5 * settings.spiral.hMin);
+  }
   checkUpperEdge(out.topology, settings);
   clock.lap("topology");
   const double perimeter = branchPerimeter(out, settings);

@@ -1,11 +1,13 @@
 #pragma once
 
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "spira/base/progress.h"
+#include "spira/mesh/substrate_surface.h"
 #include "spira/path/process_model.h"
 #include "spira/path/spiral_report.h"
 #include "spira/planning/branch_split.h"
@@ -31,6 +33,9 @@ struct PlanChoices {
   // A watertight thin-walled solid is planned on its mid-surface (docs/thin-walled-solids.md);
   // false refuses it like any closed mesh.
   bool midSurfaceOfSolid = true;
+  // Built on a surface that is not the plane z = substrateZ (a pipe, a curved plate), in the part frame;
+  // nullptr: the plane.
+  std::shared_ptr<const SubstrateSurface> substrate;
   std::string decomposerId = kDefaultDecomposerId;
   std::string closureFinderId = kDefaultClosureFinderId;
   std::map<std::string, ParamSet> params;

@@ -6,6 +6,7 @@
 
 #include "spira/base/progress.h"
 #include "spira/mesh/mesh_report.h"
+#include "spira/mesh/substrate_surface.h"
 #include "spira/mesh/triangle_mesh.h"
 #include "spira/path/spiral_report.h"
 #include "spira/path/spiral_settings.h"
@@ -39,6 +40,9 @@ struct DecomposeInput {
   // The spiral the planner lays on the generatrices (nominal height, window, start-up, termination), for
   // decomposers that lay the path themselves; nullptr: not known.
   const SpiralSettings* spiral = nullptr;
+  // The surface the part is built on when it is not the plane under the lower edge (a pipe, a curved
+  // plate), in the part frame; nullptr: the plane.
+  const SubstrateSurface* substrate = nullptr;
 };
 
 // What a decomposer that lays its path in layers (decomposer.constant_distance) measured on them.

@@ -130,7 +130,10 @@ class HeightProbe {
   {
     const Column c = columnAt(path_, L_, i);
     double substrate = kInf;
-    if (c.b.z() >= kSubstrateMinBz) substrate = (c.p.z() - s_.substrateZ) / c.b.z();
+    if (s_.substrate && !s_.substrate->isPlane())
+      substrate = s_.substrate->depthBelow(c.p, c.b, above(), depthEnd_);
+    else if (c.b.z() >= kSubstrateMinBz)
+      substrate = (c.p.z() - s_.substrateZ) / c.b.z();
     if (substrate < -above()) substrate = kInf;
     const double below =
         walk(i, c, substrate, scratch, [this](const Column& col, size_t j) { return crossing(col, j); });
@@ -340,7 +343,15 @@ DepositCheckReport checkDeposits(const Trajectory& path, const TriangleMesh* sur
   const double cell = std::max({settings.beadWidth, settings.hMax, 1e-3});
   const SegmentGrid grid(L.points, L.material, cell, 0.0);
   BoundingBox box = finiteBounds(L.points.data(), L.points.size());
-  box.extend(Vec3(box.min.x(), box.min.y(), std::min(box.min.z(), settings.substrateZ)));
+  const bool onMesh = settings.substrate && !settings.substrate->isPlane();
+  if (onMesh) {
+    const TriangleMesh& m = *settings.substrate->surfaceMesh();
+    const BoundingBox under = finiteBounds(m.vertices.data(), m.vertices.size());
+    box.extend(under.min);
+    box.extend(under.max);
+  } else {
+    box.extend(Vec3(box.min.x(), box.min.y(), std::min(box.min.z(), settings.substrateZ)));
+  }
 
   const size_t n = path.size();
   const double reach = kReachInHMax * settings.hMax;
@@ -409,7 +420,8 @@ DepositCheckReport checkDeposits(const Trajectory& path, const TriangleMesh* sur
     r.coverRadius = std::max(settings.hMax, 0.5 * settings.beadWidth) + settings.tolerance;
     const SurfaceCoverage c = measureCoverage(
         *surface, L.points, grid, r.coverRadius, settings.hMax,
-        {settings.substrateZ, 0.5 * settings.beadWidth, settings.hMax, settings.tolerance}, progress);
+        {onMesh ? -kInf : settings.substrateZ, 0.5 * settings.beadWidth, settings.hMax, settings.tolerance},
+        progress);
     r.coverageChecked = true;
     r.surfaceArea = c.area;
     r.uncoveredArea = c.uncoveredArea;

@@ -1,10 +1,12 @@
 #pragma once
 
 #include <cstddef>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "spira/base/progress.h"
+#include "spira/mesh/substrate_surface.h"
 #include "spira/mesh/triangle_mesh.h"
 #include "spira/path/trajectory.h"
 
@@ -13,6 +15,8 @@ namespace spira {
 // What the check needs besides the trajectory: the substrate plane and the process window.
 struct DepositCheckSettings {
   double substrateZ = 0.0;  // part frame, mm
+  // A substrate that is not the plane z = substrateZ (a pipe, a curved plate): the first beads rest on it.
+  std::shared_ptr<const SubstrateSurface> substrate;
   double hMin = 1.8, hMax = 2.2;
   double tolerance = 0.01;  // mm on both window bounds
   double beadWidth = 4.0;   // mm

@@ -20,10 +20,13 @@ TriangleMesh quarterTorus()
 namespace {
 
 PlanOutput planWithValues(const std::string& decomposerId, const TriangleMesh& mesh, double h, double hMin,
-                          double hMax, int points, const std::map<std::string, std::string>& values)
+                          double hMax, int points, const std::map<std::string, std::string>& values,
+                          const TriangleMesh* substrate = nullptr)
 {
   const MeshReport report = validateMesh(mesh);
   PlanRequest request(mesh, report);
+  if (substrate)
+    request.substrate = std::make_shared<const SubstrateSurface>(SubstrateSurface::mesh(*substrate));
   request.decomposerId = decomposerId;
   request.params["spiral"].set("h", h);
   request.params["spiral"].set("h_min", hMin);
@@ -61,6 +64,13 @@ size_t expectFlagsOnlyAtFolds(const PlanOutput& plan, double bendRadius)
     EXPECT_GT(kink, 90.0) << "point " << f.point << " of revolution " << p.revolution;
   }
   return plan.deposits.flags.size();
+}
+
+PlanOutput planTubeOn(const TriangleMesh& mesh, const TriangleMesh& substrate, double h, double hMin,
+                      double hMax, const std::string& output, int points)
+{
+  return planWithValues("decomposer.constant_distance", mesh, h, hMin, hMax, points, {{"output", output}},
+                        &substrate);
 }
 
 PlanOutput planTube(const TriangleMesh& mesh, double h, double hMin, double hMax, const std::string& output,

@@ -22,6 +22,10 @@ PlanOutput planTube(const TriangleMesh& mesh, double h, double hMin, double hMax
 // folds the layer over itself near the top of the bend (docs/tubes.md). Returns how many there are.
 size_t expectFlagsOnlyAtFolds(const PlanOutput& plan, double bendRadius);
 
+// planTube on a substrate mesh (in the part's frame) instead of the plate.
+PlanOutput planTubeOn(const TriangleMesh& mesh, const TriangleMesh& substrate, double h, double hMin,
+                      double hMax, const std::string& output, int points);
+
 // The same part planned by another strategy, with the same window.
 PlanOutput planWith(const std::string& decomposerId, const TriangleMesh& mesh, double h, double hMin,
                     double hMax, int points);
