@@ -14,20 +14,6 @@ namespace {
 constexpr const char* kExample =
     "--substrate cylinder:32,y (radius 32 mm about the y axis), or --substrate pipe.stl";
 
-// An open cylinder of `radius` about `axis` through the origin, `length` long, centred there, with edges
-// of about 2 mm.
-TriangleMesh cylinderAbout(double radius, char axis, double length)
-{
-  const int rings = std::max(2, int(std::ceil(length / 2.0)));
-  TriangleMesh m = makeOpenCylinder(radius, length, segmentsForEdge(radius, 2.0), rings);
-  for (Vec3& v : m.vertices) {
-    v.z() -= 0.5 * length;
-    if (axis == 'x') v = Vec3(v.z(), v.x(), v.y());
-    if (axis == 'y') v = Vec3(v.y(), v.z(), v.x());
-  }
-  return m;
-}
-
 Substrate cylinder(const std::string& spec)
 {
   std::vector<std::string> parts;
@@ -48,7 +34,7 @@ Substrate cylinder(const std::string& spec)
   if (!(length > 0.0 && length <= 1e5))
     throw UsageError("--substrate cylinder length '" + parts[2] + "' must be above 0 and at most 100000 mm",
                      kExample);
-  auto mesh = std::make_shared<const TriangleMesh>(cylinderAbout(radius, axis[0], length));
+  auto mesh = std::make_shared<const TriangleMesh>(makePipeAbout(radius, axis[0], length));
   std::ostringstream name;
   name << "cylinder R " << radius << " mm about " << axis;
   return Substrate::fromMesh(std::move(mesh), name.str());

@@ -36,19 +36,7 @@ std::vector<JointRow> readJoints(const fs::path& file, std::string& header)
   std::getline(in, header);
   std::vector<JointRow> rows;
   for (std::string line; std::getline(in, line);) {
-    std::vector<std::string> cells;
-    std::string cell;
-    bool quoted = false;
-    for (char c : line) {
-      if (c == '"') quoted = !quoted;
-      if (c == ',' && !quoted) {
-        cells.push_back(cell);
-        cell.clear();
-      } else {
-        cell += c;
-      }
-    }
-    cells.push_back(cell);
+    const std::vector<std::string> cells = csvCells(line);
     EXPECT_EQ(cells.size(), 13u) << line;
     if (cells.size() != 13u) break;
     JointRow r;

@@ -75,4 +75,22 @@ CliRun runProgram(const std::string& program, const std::vector<std::string>& ar
   return run;
 }
 
+std::vector<std::string> csvCells(const std::string& line)
+{
+  std::vector<std::string> cells;
+  std::string cell;
+  bool quoted = false;
+  for (char c : line) {
+    if (c == '"') quoted = !quoted;
+    if (c == ',' && !quoted) {
+      cells.push_back(cell);
+      cell.clear();
+    } else {
+      cell += c;
+    }
+  }
+  cells.push_back(cell);
+  return cells;
+}
+
 }  // namespace spira::test

@@ -19,4 +19,8 @@ CliRun runCli(const std::vector<std::string>& args, const std::vector<std::strin
 CliRun runProgram(const std::string& program, const std::vector<std::string>& args,
                   const std::vector<std::string>& env = {});
 
+// The cells of one line of a CSV file spira-cli writes: commas inside double quotes (joints.csv's
+// configuration) do not split.
+std::vector<std::string> csvCells(const std::string& line);
+
 }  // namespace spira::test

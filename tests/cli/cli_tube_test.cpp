@@ -2,13 +2,21 @@
 // report.json; a layer taller than the tube is wide, or a guide file that is not there, is bad input.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <sstream>
 #include <string>
 
 #include "cli_runner.h"
+#include "spira/base/units.h"
 #include "spira/io/mesh_writers.h"
 #include "spira/mesh/mesh_primitives.h"
+#include "spira/robotcell/cell_file.h"
+#include "spira/robotcell/robot_cell.h"
 #include "support/test_support.h"
 
 namespace fs = std::filesystem;
@@ -137,6 +145,78 @@ TEST(CliTube, AFeatureIsPlannedOnAPipe)
   EXPECT_EQ(runCli(args).exitCode, 2);
   args.back() = (dir / "missing.stl").string();
   EXPECT_EQ(runCli(args).exitCode, kBadInput);
+}
+
+// The columns `names` of a CSV file with a header line, per row.
+std::vector<std::vector<double>> columns(const fs::path& file, const std::vector<std::string>& names)
+{
+  std::ifstream in(file);
+  std::string line;
+  std::getline(in, line);
+  std::vector<std::string> header;
+  std::istringstream h(line);
+  for (std::string cell; std::getline(h, cell, ',');) header.push_back(cell);
+  std::vector<size_t> at;
+  for (const std::string& n : names)
+    at.push_back(size_t(std::find(header.begin(), header.end(), n) - header.begin()));
+  std::vector<std::vector<double>> rows;
+  while (std::getline(in, line)) {
+    const std::vector<std::string> cells = csvCells(line);
+    std::vector<double> row;
+    for (size_t k : at) row.push_back(k < cells.size() ? std::atof(cells[k].c_str()) : NAN);
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+// The largest angle (deg) between a planned build direction, turned by the positioner's joints, and the
+// vertical, and the largest tilt (deg) of the positioner.
+std::pair<double, double> leanOnThePositioner(const fs::path& plan, const RobotCell& cell)
+{
+  const auto b = columns(plan / "trajectory.csv", {"bx", "by", "bz"});
+  const auto e = columns(plan / "joints.csv", {"e1", "e2"});
+  EXPECT_EQ(b.size(), e.size());
+  const Transform tablePart = cell.setup().tablePart;
+  double worst = 0.0, tiltMax = 0.0;
+  for (size_t i = 0; i < std::min(b.size(), e.size()); ++i) {
+    const TiltRotatePositioner::Axes axes(degToRad(e[i][0]), degToRad(e[i][1]));
+    const Vec3 up = (cell.positioner()->forward(axes) * tablePart).linear() * Vec3(b[i][0], b[i][1], b[i][2]);
+    worst = std::max(worst, radToDeg(std::acos(std::clamp(up.normalized().z(), -1.0, 1.0))));
+    tiltMax = std::max(tiltMax, std::abs(e[i][0]));
+  }
+  return {worst, tiltMax};
+}
+
+// A bend on the bundled positioner cell: the positioner tilts the part so that every bead is laid with
+// the build direction within its tolerance of the vertical, the joints are solved and the FANUC program
+// written.
+TEST(CliTube, ABendOnThePositionerCellIsBuiltUpright)
+{
+  TempDir dir;
+  writeMesh(makeBentTube(200.0, 15.0, 0.3, 47, 30), dir / "bend.stl");
+  const fs::path cellFile = sourceDir() / "resources/cells/fanuc_m20ia_positioner.cell";
+  const RobotCell cell(readCellFile(cellFile));
+  ASSERT_NE(cell.positioner(), nullptr);
+  std::vector<std::string> args = tubePlan(dir / "bend.stl", dir / "cell");
+  args[7] = "2", args[9] = "1.8", args[11] = "2.2";
+  args.insert(args.end(), {"--cell", cellFile.string(), "--export", "fanuc_tp"});
+  const CliRun r = runCli(args);
+  ASSERT_EQ(r.exitCode, 0) << r.err << r.out;
+  EXPECT_TRUE(fs::exists(dir / "cell" / "SPIRA_PART.ls"));
+  const auto [lean, tilt] = leanOnThePositioner(dir / "cell", cell);
+  EXPECT_LE(lean, 2.0 + 1e-6);  // the default positioner tolerance
+  EXPECT_GT(tilt, 10.0);        // the 17-degree bend is followed by the tilt axis
+
+  // Within 1 degree the table's rotation has to follow the spiral's climb (1.2 deg per turn here): the
+  // beads are as level as asked, and the rotation passes its speed limit at a few points.
+  args[3] = (dir / "level").string();
+  args.insert(args.end(), {"--positioner-tolerance", "1"});
+  const CliRun level = runCli(args);
+  EXPECT_EQ(level.exitCode, 4) << level.err << level.out;
+  EXPECT_NE(level.out.find("E2"), std::string::npos) << level.out;
+  EXPECT_LE(leanOnThePositioner(dir / "level", cell).first, 1.0 + 1e-6);
+  std::printf("bend on the positioner: build direction within %.3f deg of vertical, tilt up to %.1f deg\n",
+              lean, tilt);
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 
 #include <QComboBox>
 #include <QDoubleSpinBox>
+#include <QLabel>
 #include <QPushButton>
 #include <QTest>
 
@@ -240,6 +241,54 @@ TEST(Placement, LevelBaseCutsASlantBaseLevelAndThePartThenPlans)
   saveDocScreenshot(w.captureImage(), QStringLiteral("level-base.png"));
   doc.undo();
   EXPECT_EQ(doc.part()->mesh, original);
+}
+
+// A feature added onto a pipe (the source's quarter torus on a 64 mm pipe): the Placement dock's Pipe
+// button builds it on a cylinder about y in one undo step, the scene draws the pipe, and the constant-
+// distance strategy plans it feasibly with its first beads measured down to the pipe.
+TEST(Placement, AFeatureIsPlannedOnAPipeChosenInTheDock)
+{
+  TempDir dir;
+  Document doc;
+  MainWindow w(doc, builtinRegistry(), MainWindowOptions{false, false});
+  showAndWait(w);
+  const TriangleMesh feature =
+      makeTorusOnCylinder(50.0, 15.0, 32.0, M_PI / 2, segmentsForEdge(15.0, 2.0), 39);
+  const std::filesystem::path file = dir.path() / "torus_on_pipe.stl";
+  writeMesh(feature, file, MeshFileFormat::StlBinary);
+  ASSERT_TRUE(openAndWait(w, qpath(file)));
+  PlacementPanel* panel = placementOf(w);
+  ASSERT_NE(panel, nullptr);
+  // On the plate its base edge, 22 to 31 mm up and not level, is refused.
+  ASSERT_TRUE(planAndWait(w));
+  EXPECT_FALSE(doc.results().spiral);
+
+  const size_t steps = doc.undoStack().count();
+  panel->useCylinderSubstrate(32.0, 'y');
+  EXPECT_EQ(doc.undoStack().count(), steps + 1);
+  ASSERT_EQ(doc.substrate()->kind, Substrate::Kind::Mesh);
+  EXPECT_FALSE(panel->findChild<QPushButton*>(QStringLiteral("dropToSubstrate"))->isEnabled());
+  PlanSettings settings = *doc.settings();
+  settings.decomposerId = "decomposer.constant_distance";
+  doc.setPlanSettings(settings);
+  ASSERT_TRUE(planAndWait(w));
+  ASSERT_TRUE(doc.results().spiral) << w.lastErrorMessage().toStdString();
+  ASSERT_TRUE(doc.results().reports.spiral);
+  EXPECT_TRUE(doc.results().reports.spiral->feasible);
+  EXPECT_GE(doc.results().reports.spiral->depositCheck.heightMin, 1.8 - 0.01);
+  w.sceneView()->setCameraPreset(ui::CameraPreset::Iso);
+  saveDocScreenshot(w.captureImage(), QStringLiteral("substrate-pipe.png"));
+  panel->raise();
+  QTest::qWait(50);
+  EXPECT_TRUE(panel->findChild<QLabel*>(QStringLiteral("substrateLabel"))
+                  ->text()
+                  .contains(QStringLiteral("pipe R 32")));
+  saveDocScreenshot(w.captureImage(), QStringLiteral("placement-substrate.png"));
+
+  panel->usePlateSubstrate();
+  EXPECT_EQ(doc.substrate()->kind, Substrate::Kind::Plane);
+  doc.undo();
+  EXPECT_EQ(doc.substrate()->kind, Substrate::Kind::Mesh);
 }
 
 // A part stored lying on its side but placed upright stands upright on the robot's table too:

@@ -208,6 +208,22 @@ TriangleMesh makeBentTube(double bendRadius, double radius, double angle, int se
       bendRadius, radius, [](double) { return 0.0; }, angle, segments, rings);
 }
 
+TriangleMesh makePipeAbout(double radius, char axis, double length)
+{
+  requirePositive(radius, "radius");
+  requirePositive(length, "length");
+  require(axis == 'x' || axis == 'y' || axis == 'z', std::string("axis '") + axis + "' is not x, y or z",
+          "give the axis as x, y or z");
+  const int rings = std::max(2, int(std::ceil(length / 2.0)));
+  TriangleMesh m = makeOpenCylinder(radius, length, segmentsForEdge(radius, 2.0), rings);
+  for (Vec3& v : m.vertices) {
+    v.z() -= 0.5 * length;
+    if (axis == 'x') v = Vec3(v.z(), v.x(), v.y());
+    if (axis == 'y') v = Vec3(v.y(), v.z(), v.x());
+  }
+  return m;
+}
+
 TriangleMesh makeTorusOnCylinder(double bendRadius, double radius, double cylinderRadius, double angle,
                                  int segments, int rings)
 {

@@ -53,6 +53,9 @@ struct ProcessSettings {
   // limit (the wire feed keeps its setpoint). Not used here: the motion check reports the thicker
   // deposit that follows (slowdown_deposit.h); off, an axis over its limit makes the plan infeasible.
   bool allowSlowdown = false;
+  // How far from the vertical (rad) a positioner may leave the build direction (the flat welding
+  // position); within it the table's rotation is free, so a spiral's climb does not whip it round.
+  double positionerTiltTolerance = 2.0 * 3.14159265358979323846 / 180.0;
 };
 
 enum class ProcessViolationKind {

@@ -138,6 +138,7 @@ MotionParams motionParamsFor(const RobotCell& cell, const MotionSettings& settin
 {
   MotionParams p;
   p.optimiseSpin = settings.optimiseSpin;
+  p.buildTiltToleranceDeg = radToDeg(settings.process.positionerTiltTolerance);
   p.cableTwistLimitDeg = cell.record().cableTwistLimitDeg;
   return p;
 }

@@ -170,6 +170,15 @@ const ProcessBinding& processBinding()
                "infeasible.",
                "Limits"}),
           &ProcessSettings::allowSlowdown),
+      ProcessBinding::number(
+          numberParam(
+              "positioner_tolerance", 2.0, 0.05, 15.0, "deg",
+              {"Positioner tolerance",
+               "How far from the vertical a positioner may leave the build direction (the flat welding "
+               "position). Within it the table's rotation is free, so a spiral's climb per turn does not "
+               "whip it round; smaller keeps the beads more level at the cost of more rotation.",
+               "Limits"}),
+          [](StoredProcess& p) -> double& { return p.positionerTiltTolerance; }),
   });
   return binding;
 }

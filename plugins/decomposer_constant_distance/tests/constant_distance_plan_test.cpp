@@ -34,14 +34,6 @@ std::map<int, std::vector<Vec3>> layersOf(const Trajectory& t)
   return layers;
 }
 
-double distanceToClosed(const Vec3& p, const std::vector<Vec3>& loop)
-{
-  double best = 1e300;
-  for (size_t j = 0; j < loop.size(); ++j)
-    best = std::min(best, pointSegmentDistance(p, loop[j], loop[(j + 1) % loop.size()]));
-  return best;
-}
-
 // The largest turning angle of a closed layer and where it is.
 std::pair<double, Vec3> worstKink(const std::vector<Vec3>& loop)
 {

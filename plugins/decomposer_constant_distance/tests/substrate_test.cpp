@@ -34,14 +34,6 @@ TriangleMesh pipe(double shiftZ = 0.0)
   return m;
 }
 
-double distanceToClosed(const Vec3& p, const std::vector<Vec3>& loop)
-{
-  double best = 1e300;
-  for (size_t j = 0; j < loop.size(); ++j)
-    best = std::min(best, pointSegmentDistance(p, loop[j], loop[(j + 1) % loop.size()]));
-  return best;
-}
-
 TEST(ConstantDistanceSubstrate, TheFirstLayerOfATorusOnACylinderIsTheIntersectionCurve)
 {
   const TriangleMesh part = feature();

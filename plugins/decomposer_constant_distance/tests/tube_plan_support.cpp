@@ -2,10 +2,12 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "builtin_plugins.h"
 #include "spira/base/progress.h"
+#include "spira/base/segment_distance.h"
 #include "spira/mesh/mesh_primitives.h"
 #include "spira/mesh/mesh_report.h"
 
@@ -44,6 +46,14 @@ PlanOutput planWith(const std::string& decomposerId, const TriangleMesh& mesh, d
                     double hMax, int points)
 {
   return planWithValues(decomposerId, mesh, h, hMin, hMax, points, {});
+}
+
+double distanceToClosed(const Vec3& p, const std::vector<Vec3>& loop)
+{
+  double best = 1e300;
+  for (size_t j = 0; j < loop.size(); ++j)
+    best = std::min(best, pointSegmentDistance(p, loop[j], loop[(j + 1) % loop.size()]));
+  return best;
 }
 
 size_t expectFlagsOnlyAtFolds(const PlanOutput& plan, double bendRadius)

@@ -26,6 +26,9 @@ size_t expectFlagsOnlyAtFolds(const PlanOutput& plan, double bendRadius);
 PlanOutput planTubeOn(const TriangleMesh& mesh, const TriangleMesh& substrate, double h, double hMin,
                       double hMax, const std::string& output, int points);
 
+// The distance from p to the closed polyline `loop`, over all its segments.
+double distanceToClosed(const Vec3& p, const std::vector<Vec3>& loop);
+
 // The same part planned by another strategy, with the same window.
 PlanOutput planWith(const std::string& decomposerId, const TriangleMesh& mesh, double h, double hMin,
                     double hMax, int points);

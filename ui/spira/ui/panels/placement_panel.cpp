@@ -9,6 +9,7 @@
 #include <QFormLayout>
 #include <QGroupBox>
 #include <QHBoxLayout>
+#include <QInputDialog>
 #include <QLabel>
 #include <QLocale>
 #include <QPushButton>
@@ -16,6 +17,7 @@
 #include <QVBoxLayout>
 
 #include "spira/base/error.h"
+#include "spira/mesh/mesh_primitives.h"
 #include "spira/mesh/mesh_report.h"
 #include "spira/mesh/triangle_mesh.h"
 #include "spira/planning/level_base.h"
@@ -148,6 +150,44 @@ PlacementPanel::PlacementPanel(Document& doc, QWidget* parent)
   buttons->addWidget(reset_);
   layout->addLayout(buttons);
 
+  auto* substrateBox = new QGroupBox(tr("Substrate"), body);
+  auto* substrateLayout = new QVBoxLayout(substrateBox);
+  substrate_ = new QLabel(substrateBox);
+  substrate_->setObjectName(QStringLiteral("substrateLabel"));
+  substrate_->setWordWrap(true);
+  substrateLayout->addWidget(substrate_);
+  auto* substrateButtons = new QHBoxLayout;
+  auto* plate = new QPushButton(tr("Plate"), substrateBox);
+  plate->setObjectName(QStringLiteral("substratePlate"));
+  plate->setToolTip(tr("Build on the flat plate under the part"));
+  connect(plate, &QPushButton::clicked, this, [this] { usePlateSubstrate(); });
+  auto* pipe = new QPushButton(tr("Pipe..."), substrateBox);
+  pipe->setObjectName(QStringLiteral("substratePipe"));
+  pipe->setToolTip(
+      tr("Build a feature on a pipe: a cylinder of a given radius about the x, y or z axis through "
+         "the origin, in the part's coordinates"));
+  connect(pipe, &QPushButton::clicked, this, [this] {
+    bool ok = false;
+    const double radius =
+        QInputDialog::getDouble(this, tr("Pipe substrate"), tr("Radius (mm):"), 32.0, 0.1, 100000.0, 2, &ok);
+    if (!ok) return;
+    const QString axis =
+        QInputDialog::getItem(this, tr("Pipe substrate"), tr("Axis through the origin:"),
+                              {QStringLiteral("x"), QStringLiteral("y"), QStringLiteral("z")}, 1, false, &ok);
+    if (ok) useCylinderSubstrate(radius, axis.toLatin1().at(0));
+  });
+  auto* meshButton = new QPushButton(tr("Mesh..."), substrateBox);
+  meshButton->setObjectName(QStringLiteral("substrateMesh"));
+  meshButton->setToolTip(
+      tr("Build on a surface from a file: a pipe, a curved plate or a previous part (STL, OBJ, "
+         "PLY, STEP), in the part's coordinates"));
+  connect(meshButton, &QPushButton::clicked, this, [this] { emit substrateMeshRequested(); });
+  substrateButtons->addWidget(plate);
+  substrateButtons->addWidget(pipe);
+  substrateButtons->addWidget(meshButton);
+  substrateLayout->addLayout(substrateButtons);
+  layout->addWidget(substrateBox);
+
   auto* baseBox = new QGroupBox(tr("Lower boundary (base)"), body);
   auto* baseLayout = new QVBoxLayout(baseBox);
   lower_ = new QComboBox(baseBox);
@@ -205,6 +245,12 @@ void PlacementPanel::refresh()
   updating_ = false;
   for (QDoubleSpinBox* f : fields_) f->setEnabled(has);
   const bool plane = doc_.substrate()->kind == Substrate::Kind::Plane;
+  if (plane) lastPlateZ_ = doc_.substrate()->planeZ;
+  substrate_->setText(plane
+                          ? tr("Plate at z = %1 mm").arg(QLocale().toString(doc_.substrate()->planeZ, 'f', 2))
+                          : tr("Mesh: %1 (%n triangles)", nullptr,
+                               doc_.substrate()->mesh ? int(doc_.substrate()->mesh->faceCount()) : 0)
+                                .arg(QString::fromStdString(doc_.substrate()->meshName)));
   drop_->setEnabled(has && plane);
   level_->setEnabled(has && plane);
   reset_->setEnabled(has);
@@ -258,6 +304,26 @@ void PlacementPanel::applyFields(int changed)
   if (T.isApprox(doc_.part()->T_world_part, 1e-12)) return;
   const QString name = changed < 3 ? tr("Move part") : tr("Rotate part");
   doc_.setPartPlacement(T, name.toStdString(), "placement." + std::to_string(changed));
+}
+
+void PlacementPanel::useCylinderSubstrate(double radius, char axis)
+{
+  try {
+    auto mesh = std::make_shared<const TriangleMesh>(makePipeAbout(radius, axis, 8.0 * radius));
+    doc_.setSubstrate(Substrate::fromMesh(std::move(mesh), tr("pipe R %1 mm about %2")
+                                                               .arg(QLocale().toString(radius, 'f', 1))
+                                                               .arg(QLatin1Char(axis))
+                                                               .toStdString()),
+                      tr("Build on a pipe").toStdString());
+  } catch (const Error& e) {
+    emit failed(QString::fromStdString(e.what()), QString::fromStdString(e.hint()));
+  }
+}
+
+void PlacementPanel::usePlateSubstrate()
+{
+  if (doc_.substrate()->kind == Substrate::Kind::Plane) return;
+  doc_.setSubstrate(Substrate::plane(lastPlateZ_), tr("Build on the plate").toStdString());
 }
 
 bool PlacementPanel::dropToSubstrate()

@@ -60,8 +60,15 @@ class PlacementPanel : public QDockWidget {
   // emitted when the cut itself fails) when there is no part or the substrate is not a plane.
   bool levelBase();
 
+  // Builds the part on a pipe of `radius` mm about the x, y or z `axis` through the origin (one undo step).
+  void useCylinderSubstrate(double radius, char axis);
+  // Builds the part on the plate again, at the height it had (one undo step).
+  void usePlateSubstrate();
+
  signals:
   void failed(const QString& message, const QString& hint);
+  // The user asked for a substrate mesh file: the window imports it.
+  void substrateMeshRequested();
 
  private:
   void onDocumentChanged(const ChangeSet& changes);
@@ -73,6 +80,8 @@ class PlacementPanel : public QDockWidget {
   Document::SubscriptionId subscription_ = 0;
   std::array<QDoubleSpinBox*, 6> fields_{};
   QPushButton* drop_ = nullptr;
+  QLabel* substrate_ = nullptr;
+  double lastPlateZ_ = 0.0;
   QPushButton* level_ = nullptr;
   QPushButton* reset_ = nullptr;
   QComboBox* lower_ = nullptr;

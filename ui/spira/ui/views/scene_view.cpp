@@ -73,6 +73,8 @@ struct SceneView::Scene {
   vtkNew<vtkPolyDataMapper> plateMapper;
   vtkNew<vtkActor> grid;
   vtkNew<vtkPolyDataMapper> gridMapper;
+  vtkNew<vtkActor> substrateMesh;
+  vtkNew<vtkPolyDataMapper> substrateMeshMapper;
   vtkNew<vtkTextActor> hint;
   vtkNew<vtkAxesActor> axes;
   vtkNew<vtkOrientationMarkerWidget> marker;
@@ -147,6 +149,12 @@ SceneView::SceneView(QWidget* parent) : QWidget(parent), scene_(std::make_unique
   s.plate->GetProperty()->SetSpecular(0.0);
   s.plate->VisibilityOff();
   s.renderer->AddActor(s.plate);
+  s.substrateMesh->SetMapper(s.substrateMeshMapper);
+  setColor(s.substrateMesh->GetProperty(), 150, 158, 170);
+  s.substrateMesh->GetProperty()->SetOpacity(0.55);
+  s.substrateMesh->GetProperty()->SetSpecular(0.1);
+  s.substrateMesh->VisibilityOff();
+  s.renderer->AddActor(s.substrateMesh);
   s.grid->SetMapper(s.gridMapper);
   setColor(s.grid->GetProperty(), 92, 104, 122);
   s.grid->GetProperty()->SetOpacity(0.45);
@@ -314,6 +322,14 @@ void SceneView::showSubstrate(std::optional<double> z)
 {
   scene_->substrateZ = z;
   updateSubstrate();
+  scheduleRender();
+}
+
+void SceneView::showSubstrateMesh(const TriangleMesh* mesh)
+{
+  Scene& s = *scene_;
+  if (mesh) s.substrateMeshMapper->SetInputData(toShadedPolyData(*mesh));
+  s.substrateMesh->SetVisibility(mesh != nullptr);
   scheduleRender();
 }
 

@@ -54,6 +54,9 @@ class SceneView : public QWidget {
   void showPart(const TriangleMesh* mesh, vtkSmartPointer<vtkPolyData> shaded = nullptr);
   // Shows the substrate plate at height `z` (mm), sized from the part's footprint; nullopt hides it.
   void showSubstrate(std::optional<double> z);
+  // Shows a substrate mesh (a pipe, a curved plate the part is built on), in the world frame; nullptr
+  // hides it.
+  void showSubstrateMesh(const TriangleMesh* mesh);
 
   // Shows a plan's results (field, generatrices, closure point, spiral) computed in the part
   // frame, drawn where T_world_part places the part.

@@ -25,6 +25,7 @@
 #include "spira/ui/panels/display_panel.h"
 #include "spira/ui/panels/document_tree.h"
 #include "spira/ui/panels/log_panel.h"
+#include "spira/ui/panels/placement_panel.h"
 #include "spira/ui/panels/plan_panel.h"
 #include "spira/ui/panels/simulation_panel.h"
 #include "spira/ui/panels/stage_progress.h"
@@ -240,6 +241,8 @@ void MainWindow::installComfortFeatures()
   comfort_ = new ComfortFeatures(parts, options_.persistLayout, options_.interactive);
   connect(this, &MainWindow::fileOpened, comfort_, &ComfortFeatures::fileOpened);
   connect(this, &MainWindow::planFinished, comfort_, &ComfortFeatures::planFinished);
+  connect(comfort_->placementPanel(), &PlacementPanel::substrateMeshRequested, this,
+          [this] { chooseSubstrateMesh(); });
 }
 
 void MainWindow::restoreLayout()
@@ -335,8 +338,14 @@ void MainWindow::refreshScene(bool partChanged)
     }
   }
   const Substrate& s = *doc_.substrate();
-  const bool plate = actions_.showSubstrate->isChecked() && s.kind == Substrate::Kind::Plane;
+  const bool shown = actions_.showSubstrate->isChecked();
+  const bool plate = shown && s.kind == Substrate::Kind::Plane;
   view_->showSubstrate(plate ? std::optional<double>(s.planeZ) : std::nullopt);
+  if (s.mesh != shownSubstrate_ || shown != substrateShown_) {
+    shownSubstrate_ = s.mesh;
+    substrateShown_ = shown;
+    view_->showSubstrateMesh(shown && s.kind == Substrate::Kind::Mesh ? s.mesh.get() : nullptr);
+  }
 }
 
 void MainWindow::refreshTree()

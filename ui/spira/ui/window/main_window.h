@@ -108,6 +108,9 @@ class MainWindow : public QMainWindow {
   CellWorkspace* cellWorkspace() const { return cellWorkspace_; }
   // Placement, presets, themes, help and autosave (comfort_features.h).
   ComfortFeatures* comfortFeatures() const { return comfort_; }
+  // Builds the part on the surface in `path` (a pipe, a curved plate, a previous part), one undo step;
+  // false (the error shown) when it cannot be read.
+  bool useSubstrateFile(const QString& path);
   // File > Export Robot Program (made on first use).
   ExportDialog* exportDialog();
   void showExportDialog();
@@ -147,6 +150,7 @@ class MainWindow : public QMainWindow {
   void reportError(const QString& title, const QString& message, const QString& hint);
   bool maybeSave();
   void chooseImport();
+  void chooseSubstrateMesh();
   void chooseOpen();
   bool chooseSaveAs();
   void undo();
@@ -189,6 +193,8 @@ class MainWindow : public QMainWindow {
   std::shared_ptr<const TriangleMesh> reportMesh_;
   std::optional<MeshReport> report_;
   std::shared_ptr<const Part> shownPart_;
+  std::shared_ptr<const TriangleMesh> shownSubstrate_;  // the substrate mesh the view shows
+  bool substrateShown_ = false;
   // The 3D view's surface of the last imported mesh, built by the import job (the mesh is
   // immutable, so it stays right for that mesh, also after an undo back to it).
   std::pair<std::shared_ptr<const TriangleMesh>, vtkSmartPointer<vtkPolyData>> preparedSurface_;

@@ -219,6 +219,35 @@ void MainWindow::chooseImport()
   if (!path.isEmpty()) importPartFile(path);
 }
 
+void MainWindow::chooseSubstrateMesh()
+{
+  if (busy()) return;
+  QStringList patterns;
+  for (const std::string& ext : registry_.importExtensions()) patterns << "*." + fromStd(ext);
+  const QString path = QFileDialog::getOpenFileName(this, tr("Substrate Mesh"), dialogDirectory(),
+                                                    tr("Meshes (%1);;All files (*)").arg(patterns.join(' ')));
+  if (!path.isEmpty()) useSubstrateFile(path);
+}
+
+bool MainWindow::useSubstrateFile(const QString& path)
+{
+  try {
+    NullProgress progress;
+    ImportedPart imported = importPart(registry_, path.toStdString(), nullptr, progress);
+    auto mesh = std::make_shared<const TriangleMesh>(std::move(imported.mesh));
+    doc_.setSubstrate(Substrate::fromMesh(std::move(mesh), QFileInfo(path).completeBaseName().toStdString(),
+                                          path.toStdString()),
+                      tr("Build on %1").arg(QFileInfo(path).fileName()).toStdString());
+    log_->info(tr("Substrate: %1 (%2 triangles). The part's base edge must lie on it.")
+                   .arg(QFileInfo(path).fileName())
+                   .arg(doc_.substrate()->mesh->faceCount()));
+    return true;
+  } catch (const Error& e) {
+    reportError(tr("Substrate"), fromStd(e.what()), fromStd(e.hint()));
+    return false;
+  }
+}
+
 void MainWindow::chooseOpen()
 {
   if (!maybeSave()) return;
