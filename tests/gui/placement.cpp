@@ -9,6 +9,7 @@
 #include <QDoubleSpinBox>
 #include <QLabel>
 #include <QPushButton>
+#include <QTabWidget>
 #include <QTest>
 
 #include <gtest/gtest.h>
@@ -284,6 +285,14 @@ TEST(Placement, AFeatureIsPlannedOnAPipeChosenInTheDock)
                   ->text()
                   .contains(QStringLiteral("pipe R 32")));
   saveDocScreenshot(w.captureImage(), QStringLiteral("placement-substrate.png"));
+  // The strategy's own parameters, from its schema, in the Plan dock.
+  QTabWidget* tabs = w.findChild<QTabWidget*>();
+  for (QTabWidget* t : w.findChildren<QTabWidget*>())
+    for (int k = 0; k < t->count(); ++k)
+      if (t->tabText(k) == QStringLiteral("Strategy")) tabs = t, tabs->setCurrentIndex(k);
+  ASSERT_NE(tabs, nullptr);
+  QTest::qWait(50);
+  saveDocScreenshot(w.captureImage(), QStringLiteral("plan-constant-distance.png"));
 
   panel->usePlateSubstrate();
   EXPECT_EQ(doc.substrate()->kind, Substrate::Kind::Plane);

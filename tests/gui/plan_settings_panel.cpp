@@ -82,9 +82,12 @@ TEST_F(PlanSettingsPanel, EveryParameterOfTheSchemasHasAnEditorOfItsKindInItsCat
           ASSERT_NE(spin, nullptr) << d.key;
           EXPECT_DOUBLE_EQ(spin->minimum(), *d.min) << d.key;
           EXPECT_DOUBLE_EQ(spin->maximum(), *d.max) << d.key;
-          // A dimensionless number (the thermal stage's Bond threshold) has no suffix.
-          EXPECT_EQ(spin->suffix(), d.unit.empty() ? QString() : " " + QString::fromStdString(d.unit))
-              << d.key;
+          // A dimensionless number (the thermal stage's Bond threshold) has no suffix; degrees show as a
+          // degree sign.
+          const QString suffix = d.unit.empty()    ? QString()
+                                 : d.unit == "deg" ? QStringLiteral("°")
+                                                   : " " + QString::fromStdString(d.unit);
+          EXPECT_EQ(spin->suffix(), suffix) << d.key;
           break;
         }
         case ParamType::Choice: {

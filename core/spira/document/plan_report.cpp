@@ -63,6 +63,10 @@ PlanReportSummary summaryOf(const SpiralStageReport& r, const ProcessStageReport
     s.solidWall = SolidWallSummary{r.solid->wallThickness.median, r.solid->wallThickness.thinnest,
                                    r.solid->wallThickness.thickest};
   if (process) s.buildTime = r.buildTime;
+  if (r.deltaMin && r.deltaMax && r.maxKinkDeg && r.arcStarts)
+    s.layers =
+        PlanReportSummary::Layers{r.layers,    *r.arcStarts,  *r.deltaMin,
+                                  *r.deltaMax, *r.maxKinkDeg, r.layerOutput.value_or("spiral") == "spiral"};
   return s;
 }
 

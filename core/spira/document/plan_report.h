@@ -55,6 +55,14 @@ struct PlanReportSummary {
   std::int64_t flagged = 0;                       // points it rejects
   std::vector<DepositFlagSummary> flaggedPoints;  // the first 1000 of them
   std::optional<double> buildTime;                // s: "process"."build_time_s"
+  // Laid in layers (constant distance): the layers, their distances to the one below (mm), the
+  // sharpest kink (deg) and the arcs.
+  struct Layers {
+    std::int64_t count = 0, arcStarts = 0;
+    double deltaMin = 0.0, deltaMax = 0.0, maxKinkDeg = 0.0;
+    bool spiral = true;
+  };
+  std::optional<Layers> layers;
 };
 
 // Parses a report's text; it must be a JSON object. Throws InputError naming `what` and, for a

@@ -265,6 +265,13 @@ void PlanPanel::refreshVerdict()
                  .arg(laid)
                  .arg(loc.toString(static_cast<qlonglong>(p.points)))
                  .arg(loc.toString(p.pathLength / 1000.0, 'f', 2));
+    if (p.layers)
+      lines << tr("%1 layers %2 to %3 apart (%4), sharpest kink %5 deg, %6 arc start(s)")
+                   .arg(p.layers->count)
+                   .arg(mmText(p.layers->deltaMin), mmText(p.layers->deltaMax),
+                        p.layers->spiral ? tr("one spiral through them") : tr("one arc each"))
+                   .arg(loc.toString(p.layers->maxKinkDeg, 'f', 0))
+                   .arg(p.layers->arcStarts);
     const PlanWindow window = p.window.value_or(PlanWindow());
     lines << tr("Deposit height %1 to %2 (window %3 to %4)")
                  .arg(mmText(p.heightMin), mmText(p.heightMax), mmText(window.hMin), mmText(window.hMax));
