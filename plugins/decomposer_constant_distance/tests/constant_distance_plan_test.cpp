@@ -10,6 +10,7 @@
 
 #include "spira/base/error.h"
 #include "spira/base/segment_distance.h"
+#include "spira/contour/guided_tube.h"
 #include "spira/mesh/mesh_primitives.h"
 #include "tube_plan_support.h"
 
@@ -151,6 +152,58 @@ TEST(ConstantDistancePlan, AnEndTooSlantedForTheWindowIsRefusedWithTheFix)
     EXPECT_NE(std::string(e.what()).find("cannot end on the upper edge"), std::string::npos) << e.what();
     EXPECT_NE(e.hint().find("--end truncate"), std::string::npos) << e.hint();
   }
+}
+
+}  // namespace
+}  // namespace spira::test
+
+namespace spira::test {
+namespace {
+
+// The source's generalised tube (004_bd0df31205c0c3c0.txt Eq. 2.29, validation V34): a guide curving in
+// x and y as it rises 40 mm, a radius waving between 4 and 6 mm, meshed at 0.2 mm rows and 5 deg round.
+TriangleMesh eq229Tube()
+{
+  const auto guide = [](double t) { return Vec3((0.005 * t * t * t - 0.22 * t * t) / 6.0, 0.02 * t * t, t); };
+  const auto radius = [](double t) { return 5.0 + std::cos(8.0 * kPi * t / 40.0); };
+  const TubeSurface s = guidedTube(guide, radius, 0.0, 40.0);
+  const int rings = 200, segments = 72;
+  TriangleMesh m;
+  for (int a = 0; a <= rings; ++a)
+    for (int k = 0; k < segments; ++k) m.vertices.push_back(s.at(40.0 * a / rings, 2.0 * kPi * k / segments));
+  const auto at = [segments](int a, int k) { return a * segments + (k % segments); };
+  for (int a = 0; a < rings; ++a)
+    for (int k = 0; k < segments; ++k) {
+      m.faces.push_back({at(a, k), at(a, k + 1), at(a + 1, k + 1)});
+      m.faces.push_back({at(a, k), at(a + 1, k + 1), at(a + 1, k)});
+    }
+  return m;
+}
+
+TEST(ConstantDistancePlan, TheEq229TubeIsPlannedInLayersOneMillimetreApart)
+{
+  const PlanOutput plan = planTube(eq229Tube(), 1.0, 0.9, 1.1, "layers", "truncate", "", 120);
+  ASSERT_TRUE(plan.layers);
+  // Its guide is 56.15 mm long: about as many layers at 1 mm, the narrow waists and the bends taking a
+  // few more on their outer side.
+  EXPECT_GE(plan.layers->layers, 50);
+  EXPECT_LE(plan.layers->layers, 64);
+  EXPECT_NEAR(plan.layers->deltaMin, 1.0, 1e-3);
+  EXPECT_NEAR(plan.layers->deltaMax, 1.0, 1e-3);
+  // The deposit check flags only beads a little thick at the layers' kinks (the source's thicker wall
+  // there), a handful of the path's points.
+  for (const DepositFlag& f : plan.deposits.flags) {
+    const TrajectoryPoint& p = plan.spiral.trajectory.points[f.point];
+    EXPECT_EQ(f.kind, DepositDefect::Thick) << "point " << f.point;
+    EXPECT_LT(f.height, 1.35) << "point " << f.point;
+    EXPECT_GT(plan.layers->kinkDeg[size_t(p.revolution)], 20.0) << "point " << f.point;
+  }
+  EXPECT_LT(plan.deposits.flags.size(), plan.spiral.trajectory.size() / 100);
+  std::printf(
+      "Eq. 2.29 tube at 1 mm: %d layers, kink up to %.1f deg, %d arcs, deposit check %.3f .. %.3f mm, %zu "
+      "thick at kinks\n",
+      plan.layers->layers, plan.layers->maxKinkDeg, plan.layers->arcStarts, plan.deposits.heightMin,
+      plan.deposits.heightMax, plan.deposits.flags.size());
 }
 
 }  // namespace
