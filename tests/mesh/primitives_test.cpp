@@ -145,6 +145,37 @@ TEST(Primitives, BentTubeLiesOnItsTorusAndFacesOutwards)
   EXPECT_THROW(makeBentTube(50.0, 15.0, 7.0, 12, 4), InputError);
 }
 
+// The torus feature on a pipe: every vertex on the torus, the base edge on the cylinder x^2 + z^2 = 32^2,
+// the top ring where the bend ends (004_bd0df31205c0c3c0.txt Eq. 2.17-2.19).
+TEST(Primitives, TorusOnACylinderStartsOnThePipe)
+{
+  const double R = 50.0, r = 15.0, Rc = 32.0, angle = 0.5 * kPi;
+  const TriangleMesh m = makeTorusOnCylinder(R, r, Rc, angle, 60, 40);
+  const MeshReport rep = validateMesh(m);
+  expectClean(rep);
+  ASSERT_EQ(rep.boundaryLoops.size(), 2u);
+  for (int v : rep.boundaryLoops.front().vertices)
+    EXPECT_NEAR(std::hypot(m.vertices[size_t(v)].x(), m.vertices[size_t(v)].z()), Rc, 1e-9);
+  for (int v : rep.boundaryLoops.back().vertices) EXPECT_NEAR(m.vertices[size_t(v)].x(), -R, 1e-9);
+  for (const Vec3& p : m.vertices) EXPECT_NEAR(std::hypot(std::hypot(p.x() + R, p.z()) - R, p.y()), r, 1e-9);
+  EXPECT_THROW(makeTorusOnCylinder(R, r, 10.0, angle, 12, 4), InputError);  // inside the tube: no cut
+}
+
+// A pipe to build on: on its radius about the asked axis, centred; a huge one coarsened to about 200,000
+// triangles.
+TEST(Primitives, PipeAboutAnAxisIsCentredAndBounded)
+{
+  const TriangleMesh y = makePipeAbout(32.0, 'y', 100.0);
+  for (const Vec3& p : y.vertices) {
+    EXPECT_NEAR(std::hypot(p.x(), p.z()), 32.0, 1e-9);
+    EXPECT_LE(std::abs(p.y()), 50.0 + 1e-9);
+  }
+  const TriangleMesh huge = makePipeAbout(1e5, 'x', 1e5);
+  EXPECT_LE(huge.faceCount(), 210000u);
+  EXPECT_NEAR(std::hypot(huge.vertices[7].y(), huge.vertices[7].z()), 1e5, 1e-6);
+  EXPECT_THROW(makePipeAbout(32.0, 'w', 100.0), InputError);
+}
+
 TEST(Primitives, TetrahedronIsRegularAndClosed)
 {
   const double a = 6.0;

@@ -214,8 +214,10 @@ TriangleMesh makePipeAbout(double radius, char axis, double length)
   requirePositive(length, "length");
   require(axis == 'x' || axis == 'y' || axis == 'z', std::string("axis '") + axis + "' is not x, y or z",
           "give the axis as x, y or z");
-  const int rings = std::max(2, int(std::ceil(length / 2.0)));
-  TriangleMesh m = makeOpenCylinder(radius, length, segmentsForEdge(radius, 2.0), rings);
+  // Edges of 2 mm, longer on a pipe so large that it would take more than about 200,000 triangles.
+  const double edge = std::max(2.0, std::sqrt(2.0 * 2.0 * kPi * radius * length / 200000.0));
+  const int rings = std::max(2, int(std::ceil(length / edge)));
+  TriangleMesh m = makeOpenCylinder(radius, length, std::max(8, segmentsForEdge(radius, edge)), rings);
   for (Vec3& v : m.vertices) {
     v.z() -= 0.5 * length;
     if (axis == 'x') v = Vec3(v.z(), v.x(), v.y());

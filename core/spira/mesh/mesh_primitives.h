@@ -34,7 +34,8 @@ TriangleMesh makeTubeSolid(double outerRadius, double innerRadius, double height
 // its base ring lies in z = 0 around +Z. `segments` round the profile, `rings` along the bend.
 TriangleMesh makeBentTube(double bendRadius, double radius, double angle, int segments, int rings);
 // An open cylinder of `radius` about the x, y or z axis (`axis`) through the origin, `length` long and
-// centred there, with edges of about 2 mm: a pipe to build a feature on.
+// centred there, with edges of about 2 mm (longer on a pipe that would take more than about 200,000
+// triangles): a pipe to build a feature on.
 TriangleMesh makePipeAbout(double radius, char axis, double length);
 // The same bent tube added onto a cylinder x^2 + z^2 = cylinderRadius^2 (axis y): each profile point
 // starts where it leaves the cylinder (004_bd0df31205c0c3c0.txt Eq. 2.17-2.19, the source's torus feature
