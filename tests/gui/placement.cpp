@@ -269,6 +269,8 @@ TEST(Placement, AFeatureIsPlannedOnAPipeChosenInTheDock)
   EXPECT_EQ(doc.undoStack().count(), steps + 1);
   ASSERT_EQ(doc.substrate()->kind, Substrate::Kind::Mesh);
   EXPECT_FALSE(panel->findChild<QPushButton*>(QStringLiteral("dropToSubstrate"))->isEnabled());
+  EXPECT_EQ(panel->findChild<QComboBox*>(QStringLiteral("lowerBoundaryCombo"))->itemText(0),
+            QStringLiteral("Automatic (the loop on the substrate)"));
   PlanSettings settings = *doc.settings();
   settings.decomposerId = "decomposer.constant_distance";
   doc.setPlanSettings(settings);

@@ -288,6 +288,11 @@ void PlacementPanel::refreshLoops()
     }
     if (report.boundaryLoops.empty()) lower_->setItemText(0, tr("Automatic (the part has no boundary)"));
   }
+  // On a substrate mesh the base is the loop lying on it, not the lowest one.
+  if (lower_->count() > 1)
+    lower_->setItemText(0, doc_.substrate()->kind == Substrate::Kind::Mesh
+                               ? tr("Automatic (the loop on the substrate)")
+                               : tr("Automatic (the lowest loop)"));
   const int item = part->lowerBoundaryOverride + 1;
   lower_->setCurrentIndex(item >= 0 && item < lower_->count() ? item : 0);
 }
