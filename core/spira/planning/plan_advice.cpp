@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
+#include <sstream>
 
 #include "spira/base/error.h"
 #include "spira/base/number_text.h"
@@ -102,6 +103,29 @@ class Trial {
   throw InputError(e.what(), hint);
 }
 
+// A plan laid in constant-distance layers whose flagged points mostly lie in layers that turn by more
+// than 90 degrees: the layers fold at their kinks (docs/tubes.md). Empty otherwise.
+std::string foldText(const PlanOutput& plan)
+{
+  constexpr double kFoldDeg = 90.0;
+  const std::vector<double>& kinks = plan.layers->kinkDeg;
+  size_t atFolds = 0;
+  for (const DepositFlag& f : plan.deposits.flags) {
+    const size_t k = size_t(std::max(0, plan.spiral.trajectory.points[f.point].revolution));
+    const double kink =
+        std::max(k < kinks.size() ? kinks[k] : 0.0, k + 1 < kinks.size() ? kinks[k + 1] : 0.0);
+    if (kink > kFoldDeg) ++atFolds;
+  }
+  if (plan.deposits.flags.empty() || 2 * atFolds < plan.deposits.flags.size()) return {};
+  std::ostringstream t;
+  t << atFolds << " of the " << plan.deposits.flags.size()
+    << " flagged points lie where the constant-distance layers turn by more than " << kFoldDeg
+    << " degrees (up to " << std::lround(plan.layers->maxKinkDeg)
+    << "): the kink the method develops on the outer side of a tight bend folds the layer over itself "
+       "there (docs/tubes.md: the kink, and how far --smooth-kink lowers it)";
+  return t.str();
+}
+
 }  // namespace
 
 std::string PlanAdvice::text(bool withFlags) const
@@ -165,6 +189,14 @@ PlanAdvice adviseChange(const PluginRegistry& registry, const PlanRequest& reque
         return done(change, "--strategy " + strategyName(id) + " " + flags);
     }
   advice.tried = trial.tried;
+  if (failed && failed->layers) {
+    const std::string folds = foldText(*failed);
+    if (!folds.empty()) {
+      advice.cause = folds;
+      advice.causeExplainsMost = true;
+      return advice;
+    }
+  }
   if (failed) {
     const std::vector<CrotchFlags> crotches = flagsAtCrotches(*failed, sections.process.beadWidth);
     size_t atCrotches = 0;
