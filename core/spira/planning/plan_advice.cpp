@@ -118,7 +118,7 @@ std::string foldText(const PlanOutput& plan)
   }
   if (plan.deposits.flags.empty() || 2 * atFolds < plan.deposits.flags.size()) return {};
   std::ostringstream t;
-  t << atFolds << " of the " << plan.deposits.flags.size()
+  t << "The layers fold: " << atFolds << " of the " << plan.deposits.flags.size()
     << " flagged points lie where the constant-distance layers turn by more than " << kFoldDeg
     << " degrees (up to " << std::lround(plan.layers->maxKinkDeg)
     << "): the kink the method develops on the outer side of a tight bend folds the layer over itself "
@@ -192,8 +192,9 @@ PlanAdvice adviseChange(const PluginRegistry& registry, const PlanRequest& reque
   if (failed && failed->layers) {
     const std::string folds = foldText(*failed);
     if (!folds.empty()) {
+      // Said after the general advice: cutting the part below the folds is the change that helps.
       advice.cause = folds;
-      advice.causeExplainsMost = true;
+      advice.causeExplainsMost = false;
       return advice;
     }
   }
