@@ -2,6 +2,7 @@
 
 #include "cli_common.h"
 #include "spira/base/error.h"
+#include "spira/base/units.h"
 #include "spira/io/mesh_writers.h"
 #include "spira/mesh/mesh_primitives.h"
 
@@ -28,13 +29,13 @@ TriangleMesh makeSample(const std::string& name)
   }
   if (name == "bent-tube") {
     // The source's quarter torus (004_bd0df31205c0c3c0.txt §2.3): bend radius 50, tube radius 15.
-    const double bend = 50.0, r = 15.0, angle = 0.5 * 3.14159265358979323846;
+    const double bend = 50.0, r = 15.0, angle = 0.5 * kPi;
     return makeBentTube(bend, r, angle, segmentsForEdge(r, kEdge), static_cast<int>(bend * angle / kEdge));
   }
   if (name == "torus-on-pipe") {
     // The source's feature on a 64 mm pipe (004_bd0df31205c0c3c0.txt §2.2.3): the same quarter torus
     // from where it leaves the cylinder of radius 32 about y (plan it with --substrate cylinder:32,y).
-    const double bend = 50.0, r = 15.0, angle = 0.5 * 3.14159265358979323846;
+    const double bend = 50.0, r = 15.0, angle = 0.5 * kPi;
     return makeTorusOnCylinder(bend, r, 32.0, angle, segmentsForEdge(r, kEdge),
                                static_cast<int>(bend * angle / kEdge));
   }

@@ -6,6 +6,7 @@
 #include <map>
 
 #include "spira/base/error.h"
+#include "spira/base/units.h"
 #include "spira/path/seam_placement.h"
 #include "spira/path/spiral_builder.h"
 #include "spira/path/spiral_frames.h"
@@ -14,13 +15,7 @@
 namespace spira {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kGoldenFraction = 0.3819660112501051;  // 1 - 1/phi: 137.5 deg of a turn
-
-double angleOf(int i, int n)
-{
-  return 2.0 * kPi * i / n;
-}
 
 // The outward surface normal at (t, v_i): the surface's own where it has one (a mesh's, smooth across
 // faces), else across the generatrices by the neighbouring ones and along them by a short step in t.
@@ -31,19 +26,20 @@ Vec3 normalAt(const TubeLayers& L, double t, int i)
     // Averaged over half a millimetre around the point: a sliver face of the mesh (a crease between two
     // patches of a CAD export) turns the normal it alone gives, and with it the torch, by up to 90 deg.
     constexpr double e = 0.5;
-    const double v = angleOf(i, n), dv = e / std::max(L.radiusMin, 1.0);
+    const double v = layerAngle(i, n), dv = e / std::max(L.radiusMin, 1.0);
     Vec3 sum = Vec3::Zero();
     for (const auto& [dt, dw] : {std::pair{0.0, 0.0}, {e, 0.0}, {-e, 0.0}, {0.0, dv}, {0.0, -dv}})
       sum += L.surface.normal(t + dt, v + dw);
     if (sum.norm() > 1e-9) return sum.normalized();
   }
   constexpr double e = 0.05;
-  const Vec3 across = L.surface.at(t, angleOf((i + 1) % n, n)) - L.surface.at(t, angleOf((i + n - 1) % n, n));
-  const Vec3 along = L.surface.at(t + e, angleOf(i, n)) - L.surface.at(t - e, angleOf(i, n));
+  const Vec3 across =
+      L.surface.at(t, layerAngle((i + 1) % n, n)) - L.surface.at(t, layerAngle((i + n - 1) % n, n));
+  const Vec3 along = L.surface.at(t + e, layerAngle(i, n)) - L.surface.at(t - e, layerAngle(i, n));
   Vec3 normal = across.cross(along);
-  if (!(normal.norm() > 1e-12)) return (L.surface.at(t, angleOf(i, n)) - L.guide(t)).normalized();
+  if (!(normal.norm() > 1e-12)) return (L.surface.at(t, layerAngle(i, n)) - L.guide(t)).normalized();
   normal.normalize();
-  if (normal.dot(L.surface.at(t, angleOf(i, n)) - L.guide(t)) < 0.0) normal = -normal;
+  if (normal.dot(L.surface.at(t, layerAngle(i, n)) - L.guide(t)) < 0.0) normal = -normal;
   return normal;
 }
 
@@ -86,16 +82,9 @@ std::vector<int> pieceStarts(const std::vector<char>& kept, int start)
 // The point where a closed layer turns most.
 int sharpestTurn(const std::vector<Vec3>& layer)
 {
-  const int n = int(layer.size());
   int best = 0;
-  double worst = -2.0;
-  for (int i = 0; i < n; ++i) {
-    const Vec3 in = layer[size_t(i)] - layer[size_t((i + n - 1) % n)];
-    const Vec3 out = layer[size_t((i + 1) % n)] - layer[size_t(i)];
-    if (in.norm() < 1e-12 || out.norm() < 1e-12) continue;
-    const double turn = 1.0 - in.normalized().dot(out.normalized());
-    if (turn > worst) worst = turn, best = i;
-  }
+  for (int i = 1; i < int(layer.size()); ++i)
+    if (turningAngleDeg(layer, i) > turningAngleDeg(layer, best)) best = i;
   return best;
 }
 
@@ -169,7 +158,7 @@ double levelToT(const TubeLayers& L, size_t k, int i, double rise, double step)
   if (k == 0 || f == 0.0 || f == 1.0) return lo + f * (hi - lo);
   const int n = int(L.top.size());
   const int window = std::max(2, n / 8);
-  const double v = angleOf(i, n);
+  const double v = layerAngle(i, n);
   double a = lo, b = hi;
   for (int it = 0; it < 48 && b - a > 1e-9 * std::max(1.0, std::abs(b)); ++it) {
     const double mid = 0.5 * (a + b);
@@ -249,7 +238,7 @@ SpiralReport laySpiral(const TubeLayers& L, const LayerPathSettings& s, Builder&
   const double radius = std::max(L.radiusMin, 1.0);
   for (int k = 0; k < n; ++k) {
     const int i = (first + k) % n;
-    const Vec3 out(std::cos(angleOf(k, n)), std::sin(angleOf(k, n)), 0.0);
+    const Vec3 out(std::cos(layerAngle(k, n)), std::sin(layerAngle(k, n)), 0.0);
     Polyline line;
     for (double h : z[size_t(i)]) line.push_back(radius * out + h * Vec3::UnitZ());
     level.lines.push_back(std::move(line));
@@ -272,7 +261,7 @@ SpiralReport laySpiral(const TubeLayers& L, const LayerPathSettings& s, Builder&
         std::min<size_t>(size_t(std::upper_bound(zi.begin(), zi.end(), h) - zi.begin()), zi.size() - 1);
     const size_t lo = k - 1;
     const double t = levelToT(L, lo, i, h - zi[lo], zi[k] - zi[lo]);
-    const Vec3 position = L.surface.at(t, angleOf(i, n));
+    const Vec3 position = L.surface.at(t, layerAngle(i, n));
     if (t <= L.top[size_t(i)] + 1e-9)
       b.add(L, t, i, p.revolution, position, below[size_t(i)]);
     else
@@ -383,11 +372,7 @@ LayerStats layerStats(const TubeLayers& L, const Trajectory& path)
     for (int i = 0; i < n; ++i) {
       const int a = (i + n - 1) % n, c = (i + 1) % n;
       if (!L.kept[k][size_t(a)] || !L.kept[k][size_t(i)] || !L.kept[k][size_t(c)]) continue;
-      const Vec3 in = L.points[k][size_t(i)] - L.points[k][size_t(a)];
-      const Vec3 out = L.points[k][size_t(c)] - L.points[k][size_t(i)];
-      if (in.norm() < 1e-12 || out.norm() < 1e-12) continue;
-      worst = std::max(worst,
-                       std::acos(std::clamp(in.normalized().dot(out.normalized()), -1.0, 1.0)) * 180.0 / kPi);
+      worst = std::max(worst, turningAngleDeg(L.points[k], i));
     }
     s.kinkDeg.push_back(worst);
     s.maxKinkDeg = std::max(s.maxKinkDeg, worst);

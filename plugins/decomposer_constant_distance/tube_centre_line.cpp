@@ -12,22 +12,6 @@
 namespace spira {
 namespace {
 
-// The centroid of a closed polyline, each segment weighted by its length (a contour's points are
-// spaced by the mesh, not evenly).
-Vec3 closedCentroid(const std::vector<Vec3>& points)
-{
-  Vec3 sum = Vec3::Zero();
-  double length = 0.0;
-  for (size_t i = 0; i < points.size(); ++i) {
-    const Vec3& a = points[i];
-    const Vec3& b = points[(i + 1) % points.size()];
-    const double l = (b - a).norm();
-    sum += 0.5 * l * (a + b);
-    length += l;
-  }
-  return length > 0.0 ? Vec3(sum / length) : points.front();
-}
-
 std::string pointText(const Vec3& p)
 {
   std::ostringstream s;
@@ -57,7 +41,7 @@ Polyline centreLineFromField(const TriangleMesh& mesh, const std::vector<double>
     const double longest = level.contours.front().length();
     std::vector<Vec3> centres;
     for (const IsoContour& c : level.contours)
-      if (c.closed && c.length() > 0.2 * longest) centres.push_back(closedCentroid(c.positions()));
+      if (c.closed && c.length() > 0.2 * longest) centres.push_back(polygonCentroid(c.positions()));
     if (centres.size() > 1 || !level.contours.front().closed) {
       std::string where;
       for (const Vec3& c : centres) where += (where.empty() ? "" : " and ") + pointText(c);

@@ -7,18 +7,12 @@
 #include <sstream>
 
 #include "spira/base/error.h"
+#include "spira/base/units.h"
 #include "spira/contour/guided_tube.h"
 #include "spira/contour/meshed_tube.h"
 
 namespace spira {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
-
-double angleOf(int i, int n)
-{
-  return 2.0 * kPi * i / n;
-}
 
 std::string mm(double x, int digits = 1)
 {
@@ -44,7 +38,7 @@ double checkGuideInside(const TubeSurface& tube, const std::function<Vec3(double
     const double t = from + (to - from) * (0.02 + 0.96 * k / kSamples);
     double sum = 0.0;
     for (int j = 0; j < kAround; ++j) {
-      const Vec3 p = tube.at(t, angleOf(j, kAround));
+      const Vec3 p = tube.at(t, layerAngle(j, kAround));
       if (!p.allFinite())
         throw InputError(
             "the guide curve leaves the part near " + pointText(guide(t)) + ", " + mm(t) +
@@ -71,7 +65,7 @@ TubeSurface continuedPastTop(const TubeSurface& tube, const std::function<Vec3(d
   const int n = int(top.size());
   std::vector<Vec3> edge(top.size()), along(top.size());
   for (int i = 0; i < n; ++i) {
-    edge[size_t(i)] = tube.at(top[size_t(i)], angleOf(i, n));
+    edge[size_t(i)] = tube.at(top[size_t(i)], layerAngle(i, n));
     constexpr double e = 1e-3;
     along[size_t(i)] = (guide(top[size_t(i)] + e) - guide(top[size_t(i)] - e)).normalized();
   }
@@ -118,7 +112,7 @@ std::vector<Vec3> pointsAt(const TubeSurface& surface, const std::vector<double>
 {
   const int n = int(t.size());
   std::vector<Vec3> p(t.size());
-  for (int i = 0; i < n; ++i) p[size_t(i)] = surface.at(t[size_t(i)], angleOf(i, n));
+  for (int i = 0; i < n; ++i) p[size_t(i)] = surface.at(t[size_t(i)], layerAngle(i, n));
   return p;
 }
 
@@ -150,7 +144,7 @@ void modulateEnd(TubeLayers& L, const TubeLayerSettings& s)
   {
     Range gap;
     for (size_t i = 0; i < n; ++i)
-      gap.add((L.surface.at(L.top[i], angleOf(int(i), int(n))) - L.points[lastInside][i]).norm());
+      gap.add((L.surface.at(L.top[i], layerAngle(int(i), int(n))) - L.points[lastInside][i]).norm());
     gapSpread = gap.max - gap.min;
   }
   const double low = s.hMin - s.tolerance, high = s.hMax + s.tolerance;
@@ -162,7 +156,7 @@ void modulateEnd(TubeLayers& L, const TubeLayerSettings& s)
   for (size_t from = lastInside + 1; from-- > 0;) {
     Range gap;
     for (size_t i = 0; i < n; ++i)
-      gap.add((L.surface.at(L.top[i], angleOf(int(i), int(n))) - L.points[from][i]).norm());
+      gap.add((L.surface.at(L.top[i], layerAngle(int(i), int(n))) - L.points[from][i]).norm());
     if (gap.max < 1e-9) continue;
     const int fewest = std::max(1, int(std::ceil(gap.max / s.hMax - 1e-9)));
     const int most = std::max(fewest, int(std::floor(gap.min / s.hMin + 1e-9)));
@@ -217,14 +211,6 @@ void truncateEnd(TubeLayers& L)
   }
 }
 
-double turningDeg(const std::vector<Vec3>& p, int i)
-{
-  const int n = int(p.size());
-  const Vec3 in = p[size_t(i)] - p[size_t((i + n - 1) % n)], out = p[size_t((i + 1) % n)] - p[size_t(i)];
-  if (in.norm() < 1e-12 || out.norm() < 1e-12) return 0.0;
-  return std::acos(std::clamp(in.normalized().dot(out.normalized()), -1.0, 1.0)) * 180.0 / kPi;
-}
-
 // Relaxes the layer's t towards its neighbours' around every point turning more than `maxDeg`, each move
 // cut short where the point's distance to the layer below would leave [low, high]. Returns the points moved.
 int smoothKinks(const TubeSurface& surface, std::vector<double>& t, std::vector<Vec3>& p,
@@ -238,7 +224,7 @@ int smoothKinks(const TubeSurface& surface, std::vector<double>& t, std::vector<
     std::vector<char> near(t.size(), 0);
     bool any = false;
     for (int i = 0; i < n; ++i)
-      if (turningDeg(p, i) > maxDeg) {
+      if (turningAngleDeg(p, i) > maxDeg) {
         any = true;
         for (int d = -kReach; d <= kReach; ++d) near[size_t(((i + d) % n + n) % n)] = 1;
       }

@@ -7,11 +7,10 @@
 
 #include "spira/base/error.h"
 #include "spira/base/segment_distance.h"
+#include "spira/base/units.h"
 
 namespace spira {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 void validate(const TubeSurface& surface, const std::vector<double>& firstLayer, double until,
               const ConstantDistanceSettings& s)
@@ -45,17 +44,24 @@ double distanceToClosedLayer(const Vec3& p, const std::vector<Vec3>& layer, int 
   return best;
 }
 
+double layerAngle(int i, int n)
+{
+  return 2.0 * kPi * i / n;
+}
+
+double turningAngleDeg(const std::vector<Vec3>& layer, int i)
+{
+  const int n = int(layer.size());
+  const Vec3 in = layer[size_t(i)] - layer[size_t((i + n - 1) % n)];
+  const Vec3 out = layer[size_t((i + 1) % n)] - layer[size_t(i)];
+  if (in.norm() < 1e-12 || out.norm() < 1e-12) return 0.0;
+  return radToDeg(std::acos(std::clamp(in.normalized().dot(out.normalized()), -1.0, 1.0)));
+}
+
 double maxTurningAngle(const std::vector<Vec3>& closedLayer)
 {
-  const size_t n = closedLayer.size();
   double worst = 0.0;
-  for (size_t i = 0; i < n; ++i) {
-    const Vec3 in = closedLayer[i] - closedLayer[(i + n - 1) % n];
-    const Vec3 out = closedLayer[(i + 1) % n] - closedLayer[i];
-    if (in.norm() < 1e-12 || out.norm() < 1e-12) continue;
-    const double c = std::clamp(in.normalized().dot(out.normalized()), -1.0, 1.0);
-    worst = std::max(worst, std::acos(c) * 180.0 / kPi);
-  }
+  for (int i = 0; i < int(closedLayer.size()); ++i) worst = std::max(worst, turningAngleDeg(closedLayer, i));
   return worst;
 }
 
@@ -67,7 +73,7 @@ ConstantDistanceLayers constantDistanceLayers(const TubeSurface& surface,
   const int n = s.pointsPerLayer;
   const int window = s.window > 0 ? s.window : std::max(2, n / 8);
   std::vector<double> v(static_cast<size_t>(n));
-  for (int i = 0; i < n; ++i) v[size_t(i)] = 2.0 * kPi * i / n;
+  for (int i = 0; i < n; ++i) v[size_t(i)] = layerAngle(i, n);
 
   ConstantDistanceLayers out;
   out.t.push_back(firstLayer);

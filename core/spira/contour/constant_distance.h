@@ -53,6 +53,13 @@ ConstantDistanceLayers constantDistanceLayers(const TubeSurface& surface,
                                               const std::vector<double>& firstLayer, double until,
                                               const ConstantDistanceSettings& settings);
 
+// Point i of a layer of n lies at v = 2 pi i / n round the guide.
+double layerAngle(int i, int n);
+
+// The angle (degrees) the closed polyline `layer` turns at its point i, between the segments into and out
+// of it; 0 where either has no length.
+double turningAngleDeg(const std::vector<Vec3>& layer, int i);
+
 // The distance from p to the closed polyline `layer` (point to segment, the closing segment included),
 // over the segments whose first point lies within `window` indices of `centre` (all when window <= 0).
 double distanceToClosedLayer(const Vec3& p, const std::vector<Vec3>& layer, int centre, int window);

@@ -21,20 +21,6 @@ struct Hull {
   std::vector<Vec3> corners;
 };
 
-// The barycentric weights of p in face f.
-Vec3 barycentric(const TriangleMesh& mesh, int f, const Vec3& p)
-{
-  const Face& face = mesh.faces[size_t(f)];
-  const Vec3 &a = mesh.vertices[size_t(face[0])], &b = mesh.vertices[size_t(face[1])],
-             &c = mesh.vertices[size_t(face[2])];
-  const Vec3 e1 = b - a, e2 = c - a, w = p - a;
-  const double d11 = e1.dot(e1), d12 = e1.dot(e2), d22 = e2.dot(e2), w1 = w.dot(e1), w2 = w.dot(e2);
-  const double den = d11 * d22 - d12 * d12;
-  if (!(std::abs(den) > 0.0)) return Vec3(1.0, 0.0, 0.0);
-  const double v = (d22 * w1 - d12 * w2) / den, u = (d11 * w2 - d12 * w1) / den;
-  return Vec3(1.0 - v - u, v, u);
-}
-
 }  // namespace
 
 TubeSurface meshedTube(const TriangleMesh& mesh, std::function<Vec3(double)> guide, double t0, double t1,
@@ -61,13 +47,12 @@ TubeSurface meshedTube(const TriangleMesh& mesh, std::function<Vec3(double)> gui
     const RayHit hit = hull->tree.firstHit(centre, across, 0.0, reach);
     if (hit.face < 0) return Vec3(across.normalized());
     const Vec3 p = centre + hit.distance * across;
-    const SurfacePoint at{p, hit.face, barycentric(hull->mesh, hit.face, p)};
-    Vec3 n = surfaceNormalAt(hull->mesh, hull->corners, at);
+    Vec3 n = surfaceNormalAt(hull->mesh, hull->corners, closestPointOnFace(hull->mesh, hit.face, p));
     return Vec3(n.dot(across) < 0.0 ? -n : n);
   };
   bool seen = false;
   for (int k = 0; k < 16 * 8 && !seen; ++k)
-    seen = tube.at(t0 + (t1 - t0) * (k / 8) / 15.0, 2.0 * 3.14159265358979323846 * (k % 8) / 8).allFinite();
+    seen = tube.at(t0 + (t1 - t0) * (k / 8) / 15.0, layerAngle(k % 8, 8)).allFinite();
   if (!seen)
     throw InputError("no ray across the guide curve meets the tube within " + std::to_string(reach) + " mm",
                      "give a guide that runs inside the tube (its centre line)");
@@ -84,7 +69,7 @@ std::vector<double> edgeLayer(const TubeSurface& tube, int points, double from, 
   const double step = (to - from) / 256;
   const double span = std::abs(to - from);
   for (int i = 0; i < points; ++i) {
-    const double v = 2.0 * 3.14159265358979323846 * i / points;
+    const double v = layerAngle(i, points);
     double outside = from, inside = from;
     while (std::abs(inside - from) <= span && !tube.at(inside, v).allFinite())
       outside = inside, inside += step;

@@ -64,6 +64,16 @@ Vec3 surfaceNormalAt(const TriangleMesh& mesh, const std::vector<Vec3>& cornerNo
   return mesh.faceNormal(p.face);
 }
 
+SurfacePoint closestPointOnFace(const TriangleMesh& mesh, int face, const Vec3& q)
+{
+  const Face& fc = mesh.faces[size_t(face)];
+  const Vec3 w = closestBarycentric(q, mesh.vertices[size_t(fc[0])], mesh.vertices[size_t(fc[1])],
+                                    mesh.vertices[size_t(fc[2])]);
+  return {w[0] * mesh.vertices[size_t(fc[0])] + w[1] * mesh.vertices[size_t(fc[1])] +
+              w[2] * mesh.vertices[size_t(fc[2])],
+          face, w};
+}
+
 SurfacePoint closestSurfacePoint(const TriangleMesh& mesh, const Vec3& q)
 {
   SurfacePoint best;

@@ -24,6 +24,9 @@ Vec3 interpolateAt(const TriangleMesh& mesh, const SurfacePoint& p, const std::v
 // face normal where the interpolated normals cancel out (a knife edge).
 Vec3 surfaceNormalAt(const TriangleMesh& mesh, const std::vector<Vec3>& cornerNormals, const SurfacePoint& p);
 
+// The point of face `face` closest to `q` (q itself when it lies on the face, as a ray's hit does).
+SurfacePoint closestPointOnFace(const TriangleMesh& mesh, int face, const Vec3& q);
+
 // The surface point of `mesh` closest to `q` (brute force over faces: meant for a few queries).
 SurfacePoint closestSurfacePoint(const TriangleMesh& mesh, const Vec3& q);
 

@@ -97,21 +97,29 @@ std::vector<BoundaryLoop> extractBoundaryLoops(const TriangleMesh& mesh, const E
   return loops;
 }
 
-Vec3 loopCentroid(const TriangleMesh& mesh, const BoundaryLoop& loop)
+Vec3 polygonCentroid(const std::vector<Vec3>& points)
 {
   Vec3 sum = Vec3::Zero();
   double length = 0.0;
-  const size_t n = loop.vertices.size();
+  const size_t n = points.size();
   for (size_t i = 0; i < n; ++i) {
-    const Vec3& a = mesh.vertices[loop.vertices[i]];
-    const Vec3& b = mesh.vertices[loop.vertices[(i + 1) % n]];
+    const Vec3& a = points[i];
+    const Vec3& b = points[(i + 1) % n];
     const double l = (b - a).norm();
     sum += l * 0.5 * (a + b);
     length += l;
   }
   if (length > 0) return sum / length;
-  for (int v : loop.vertices) sum += mesh.vertices[v];
+  for (const Vec3& p : points) sum += p;
   return n ? Vec3(sum / static_cast<double>(n)) : Vec3::Zero();
+}
+
+Vec3 loopCentroid(const TriangleMesh& mesh, const BoundaryLoop& loop)
+{
+  std::vector<Vec3> points;
+  points.reserve(loop.vertices.size());
+  for (int v : loop.vertices) points.push_back(mesh.vertices[static_cast<size_t>(v)]);
+  return polygonCentroid(points);
 }
 
 }  // namespace spira

@@ -29,8 +29,11 @@ struct BoundaryLoop {
 std::vector<BoundaryLoop> extractBoundaryLoops(const TriangleMesh& mesh, const EdgeTable& edges,
                                                const VertexFans& fans);
 
-// Centroid of the loop's polygon (edge midpoints weighted by edge length: uneven vertex spacing
-// does not pull it sideways).
+// Centroid of a closed polygon: its edges' midpoints weighted by their lengths, so uneven vertex
+// spacing does not pull it sideways (the vertices' mean when it has no length).
+Vec3 polygonCentroid(const std::vector<Vec3>& points);
+
+// The centroid of the loop's polygon.
 Vec3 loopCentroid(const TriangleMesh& mesh, const BoundaryLoop& loop);
 
 }  // namespace spira

@@ -162,29 +162,21 @@ TriangleMesh makeOpenCone(double r0, double r1, double height, int segments, int
 
 namespace {
 
-// The torus section of makeBentTube whose profile point v starts at bend angle start(v).
+// The torus section of makeBentTube whose profile point v starts at bend angle start(v). Counter-clockwise
+// seen from outside: the profile turns from +X (outward) to +Y as v grows and the tube runs up +Z at its
+// base.
 TriangleMesh torusSection(double bendRadius, double radius, const std::function<double(double)>& start,
                           double angle, int segments, int rings)
 {
-  TriangleMesh m;
-  for (int a = 0; a <= rings; ++a)
-    for (int k = 0; k < segments; ++k) {
-      const double v = 2.0 * kPi * k / segments;
-      const double t0 = start(v);
-      const double t = t0 + (angle - t0) * a / rings;
-      const Vec3 outward(std::cos(t), 0.0, std::sin(t));
-      const Vec3 centre(bendRadius * std::cos(t) - bendRadius, 0.0, bendRadius * std::sin(t));
-      m.vertices.push_back(centre + radius * (std::cos(v) * outward + std::sin(v) * Vec3::UnitY()));
-    }
-  const auto at = [segments](int a, int k) { return a * segments + (k % segments); };
-  // Counter-clockwise seen from outside: the profile turns from +X (outward) to +Y as v grows and
-  // the tube runs up +Z at its base.
-  for (int a = 0; a < rings; ++a)
-    for (int k = 0; k < segments; ++k) {
-      m.faces.push_back({at(a, k), at(a, k + 1), at(a + 1, k + 1)});
-      m.faces.push_back({at(a, k), at(a + 1, k + 1), at(a + 1, k)});
-    }
-  return m;
+  return makeTubeSurface(
+      [&](double u, double v) {
+        const double t0 = start(v);
+        const double t = t0 + (angle - t0) * u;
+        const Vec3 outward(std::cos(t), 0.0, std::sin(t));
+        const Vec3 centre(bendRadius * std::cos(t) - bendRadius, 0.0, bendRadius * std::sin(t));
+        return Vec3(centre + radius * (std::cos(v) * outward + std::sin(v) * Vec3::UnitY()));
+      },
+      segments, rings);
 }
 
 void requireBend(double bendRadius, double radius, double angle)
@@ -199,6 +191,21 @@ void requireBend(double bendRadius, double radius, double angle)
 }
 
 }  // namespace
+
+TriangleMesh makeTubeSurface(const std::function<Vec3(double u, double v)>& at, int segments, int rings)
+{
+  requireCounts(segments, rings);
+  TriangleMesh m;
+  for (int a = 0; a <= rings; ++a)
+    for (int k = 0; k < segments; ++k) m.vertices.push_back(at(double(a) / rings, 2.0 * kPi * k / segments));
+  const auto index = [segments](int a, int k) { return a * segments + (k % segments); };
+  for (int a = 0; a < rings; ++a)
+    for (int k = 0; k < segments; ++k) {
+      m.faces.push_back({index(a, k), index(a, k + 1), index(a + 1, k + 1)});
+      m.faces.push_back({index(a, k), index(a + 1, k + 1), index(a + 1, k)});
+    }
+  return m;
+}
 
 TriangleMesh makeBentTube(double bendRadius, double radius, double angle, int segments, int rings)
 {

@@ -1,5 +1,7 @@
 #pragma once
 
+#include <functional>
+
 #include "spira/mesh/triangle_mesh.h"
 
 namespace spira {
@@ -33,6 +35,10 @@ TriangleMesh makeTubeSolid(double outerRadius, double innerRadius, double height
 // (g(t) = (R cos t - R, 0, R sin t), t from 0 to `angle` rad), with a circular profile of `radius`;
 // its base ring lies in z = 0 around +Z. `segments` round the profile, `rings` along the bend.
 TriangleMesh makeBentTube(double bendRadius, double radius, double angle, int segments, int rings);
+// An open tube sampled from a surface at(u, v), u from 0 (base ring) to 1 (top ring) in `rings` rows and
+// v round it in `segments`, faces wound as v and u grow (outward when v turns counter-clockwise seen from
+// where u grows).
+TriangleMesh makeTubeSurface(const std::function<Vec3(double u, double v)>& at, int segments, int rings);
 // An open cylinder of `radius` about the x, y or z axis (`axis`) through the origin, `length` long and
 // centred there, with edges of about 2 mm (longer on a pipe that would take more than about 200,000
 // triangles): a pipe to build a feature on.

@@ -4,6 +4,7 @@
 #include <limits>
 #include <vector>
 
+#include "spira/base/units.h"
 #include "spira/path/calibration_table.h"
 #include "spira/path/trajectory.h"
 
@@ -55,7 +56,7 @@ struct ProcessSettings {
   bool allowSlowdown = false;
   // How far from the vertical (rad) a positioner may leave the build direction (the flat welding
   // position); within it the table's rotation is free, so a spiral's climb does not whip it round.
-  double positionerTiltTolerance = 2.0 * 3.14159265358979323846 / 180.0;
+  double positionerTiltTolerance = degToRad(2.0);
 };
 
 enum class ProcessViolationKind {

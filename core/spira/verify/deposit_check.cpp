@@ -21,7 +21,6 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 // Height of a run's last point when material within a bead width ends it (not measured).
 constexpr double kEnded = -std::numeric_limits<double>::max();
 // Build directions flatter than this do not look down onto the substrate plane.
-constexpr double kSubstrateMinBz = 0.1;
 // How far below a point, in h_max, its column is searched for material. Beyond 2 h_max a point is
 // in mid-air whatever lies further down, so a deeper search only sharpens the message's figure,
 // while on a path with thousands of points in mid-air it crossed the whole part from each of them
@@ -120,8 +119,8 @@ Column columnAt(const Trajectory& path, const PathLayout& L, size_t i)
 class HeightProbe {
  public:
   HeightProbe(const Trajectory& path, const PathLayout& L, const SegmentGrid& grid,
-              const DepositCheckSettings& s, double depthEnd)
-      : path_(path), L_(L), grid_(grid), s_(s), depthEnd_(depthEnd)
+              const DepositCheckSettings& s, const SubstrateSurface& under, double depthEnd)
+      : path_(path), L_(L), grid_(grid), s_(s), under_(under), depthEnd_(depthEnd)
   {
   }
 
@@ -129,11 +128,7 @@ class HeightProbe {
   double height(size_t i, std::vector<uint32_t>& scratch) const
   {
     const Column c = columnAt(path_, L_, i);
-    double substrate = kInf;
-    if (s_.substrate && !s_.substrate->isPlane())
-      substrate = s_.substrate->depthBelow(c.p, c.b, above(), depthEnd_);
-    else if (c.b.z() >= kSubstrateMinBz)
-      substrate = (c.p.z() - s_.substrateZ) / c.b.z();
+    double substrate = under_.depthBelow(c.p, c.b, above(), depthEnd_);
     if (substrate < -above()) substrate = kInf;
     const double below =
         walk(i, c, substrate, scratch, [this](const Column& col, size_t j) { return crossing(col, j); });
@@ -251,6 +246,7 @@ class HeightProbe {
   const PathLayout& L_;
   const SegmentGrid& grid_;
   const DepositCheckSettings& s_;
+  const SubstrateSurface& under_;
   double depthEnd_;
 };
 
@@ -344,11 +340,12 @@ DepositCheckReport checkDeposits(const Trajectory& path, const TriangleMesh* sur
   const SegmentGrid grid(L.points, L.material, cell, 0.0);
   BoundingBox box = finiteBounds(L.points.data(), L.points.size());
   const bool onMesh = settings.substrate && !settings.substrate->isPlane();
+  const SubstrateSurface under = onMesh ? *settings.substrate : SubstrateSurface::plane(settings.substrateZ);
   if (onMesh) {
     const TriangleMesh& m = *settings.substrate->surfaceMesh();
-    const BoundingBox under = finiteBounds(m.vertices.data(), m.vertices.size());
-    box.extend(under.min);
-    box.extend(under.max);
+    const BoundingBox reach = finiteBounds(m.vertices.data(), m.vertices.size());
+    box.extend(reach.min);
+    box.extend(reach.max);
   } else {
     box.extend(Vec3(box.min.x(), box.min.y(), std::min(box.min.z(), settings.substrateZ)));
   }
@@ -371,7 +368,7 @@ DepositCheckReport checkDeposits(const Trajectory& path, const TriangleMesh* sur
                           (k & 4) ? box.max.z() : box.min.z());
         depthEnd = std::max(depthEnd, b.allFinite() ? b.dot(p - corner) : 0.0);
       }
-      const HeightProbe probe(path, L, grid, settings, std::min(depthEnd, reach) + cell);
+      const HeightProbe probe(path, L, grid, settings, under, std::min(depthEnd, reach) + cell);
       if (runEnds(L, i)) {
         // Nothing is laid after a run's last point: its bead ends on what lies within a bead
         // width (a closed part's closure point fills the centre of its last ring).

@@ -167,17 +167,7 @@ TriangleMesh eq229Tube()
   const auto guide = [](double t) { return Vec3((0.005 * t * t * t - 0.22 * t * t) / 6.0, 0.02 * t * t, t); };
   const auto radius = [](double t) { return 5.0 + std::cos(8.0 * kPi * t / 40.0); };
   const TubeSurface s = guidedTube(guide, radius, 0.0, 40.0);
-  const int rings = 200, segments = 72;
-  TriangleMesh m;
-  for (int a = 0; a <= rings; ++a)
-    for (int k = 0; k < segments; ++k) m.vertices.push_back(s.at(40.0 * a / rings, 2.0 * kPi * k / segments));
-  const auto at = [segments](int a, int k) { return a * segments + (k % segments); };
-  for (int a = 0; a < rings; ++a)
-    for (int k = 0; k < segments; ++k) {
-      m.faces.push_back({at(a, k), at(a, k + 1), at(a + 1, k + 1)});
-      m.faces.push_back({at(a, k), at(a + 1, k + 1), at(a + 1, k)});
-    }
-  return m;
+  return makeTubeSurface([&](double u, double v) { return s.at(40.0 * u, v); }, 72, 200);
 }
 
 TEST(ConstantDistancePlan, TheEq229TubeIsPlannedInLayersOneMillimetreApart)
