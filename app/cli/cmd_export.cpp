@@ -213,6 +213,7 @@ int cmdExport(const std::vector<std::string>& argv)
   job.cell = cell ? &*cell : nullptr;
   job.plannedCollision = source.plannedCollision;
   job.header = programHeader(source.partName, source.cellName, source.report);
+  job.positionerToleranceDeg = source.report.positionerToleranceDeg;
   NullProgress progress;
   const ExportOutcome exported = exportTrajectory(registry, source.trajectory, job, outDir, progress);
   printExportSummary(exported, std::cout);

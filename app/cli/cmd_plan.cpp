@@ -190,7 +190,9 @@ int cmdPlan(const std::vector<std::string>& argv)
     job.prep = prep;
     job.cell = cell ? &*cell : nullptr;
     job.plannedCollision = planned.collision;  // flagged in the program, refused unless forced
-    job.header = programHeader(positional[0], cellFile, planSummaryOf(r).value_or(PlanReportSummary{}));
+    const PlanReportSummary summary = planSummaryOf(r).value_or(PlanReportSummary{});
+    job.header = programHeader(positional[0], cellFile, summary);
+    job.positionerToleranceDeg = summary.positionerToleranceDeg;
     const ExportOutcome exported = exportTrajectory(registry, finalPath, job, outDir, progress);
     printExportSummary(exported, std::cout);
     report["timings_s"]["export"] = exported.seconds;

@@ -143,6 +143,7 @@ DecomposeResult ConstantDistanceDecomposer::decomposeChecked(const DecomposeInpu
 
   DecomposeResult out;
   out.generatrices = std::move(laid.generatrices);
+  out.generatrices.guide = line;
   out.warnings = layers.warnings;
   if (layers.smoothedPoints > 0)
     out.warnings.push_back(std::to_string(layers.smoothedPoints) +

@@ -12,6 +12,7 @@
 #include <string>
 
 #include "cli_runner.h"
+#include "export/krl_reader.h"
 #include "spira/base/units.h"
 #include "spira/io/mesh_writers.h"
 #include "spira/mesh/mesh_primitives.h"
@@ -189,19 +190,28 @@ std::pair<double, double> leanOnThePositioner(const fs::path& plan, const RobotC
   return {worst, tiltMax};
 }
 
+// The plan of a gentle bend (R 200, r 15, 0.3 rad) written into `dir`, at 2 mm in 1.8 .. 2.2 mm on `cell`,
+// into dir / out, written for `exporter`.
+std::vector<std::string> bendOnCell(const TempDir& dir, const fs::path& cell, const std::string& out,
+                                    const std::string& exporter)
+{
+  writeMesh(makeBentTube(200.0, 15.0, 0.3, 47, 30), dir / "bend.stl");
+  std::vector<std::string> args = tubePlan(dir / "bend.stl", dir / out);
+  args[7] = "2", args[9] = "1.8", args[11] = "2.2";
+  args.insert(args.end(), {"--cell", cell.string(), "--export", exporter});
+  return args;
+}
+
 // A bend on the bundled positioner cell: the positioner tilts the part so that every bead is laid with
 // the build direction within its tolerance of the vertical, the joints are solved and the FANUC program
 // written.
 TEST(CliTube, ABendOnThePositionerCellIsBuiltUpright)
 {
   TempDir dir;
-  writeMesh(makeBentTube(200.0, 15.0, 0.3, 47, 30), dir / "bend.stl");
   const fs::path cellFile = sourceDir() / "resources/cells/fanuc_m20ia_positioner.cell";
   const RobotCell cell(readCellFile(cellFile));
   ASSERT_NE(cell.positioner(), nullptr);
-  std::vector<std::string> args = tubePlan(dir / "bend.stl", dir / "cell");
-  args[7] = "2", args[9] = "1.8", args[11] = "2.2";
-  args.insert(args.end(), {"--cell", cellFile.string(), "--export", "fanuc_tp"});
+  std::vector<std::string> args = bendOnCell(dir, cellFile, "cell", "fanuc_tp");
   const CliRun r = runCli(args);
   ASSERT_EQ(r.exitCode, 0) << r.err << r.out;
   EXPECT_TRUE(fs::exists(dir / "cell" / "SPIRA_PART.ls"));
@@ -219,6 +229,65 @@ TEST(CliTube, ABendOnThePositionerCellIsBuiltUpright)
   EXPECT_LE(leanOnThePositioner(dir / "level", cell).first, 1.0 + 1e-6);
   std::printf("bend on the positioner: build direction within %.3f deg of vertical, tilt up to %.1f deg\n",
               lean, tilt);
+}
+
+// The same bend on a KUKA cell with the positioner, the torch leant by the source's tilt law (10 deg
+// lead, 5 deg side): the positioner keeps the build direction, not the torch, within 1 deg of the
+// vertical, and the KRL program, read back, holds the torch at the tilt law's angle off the vertical.
+TEST(CliTube, ABendOnAKukaPositionerIsExportedWithTheTorchLeaning)
+{
+  TempDir dir;
+  const fs::path cellFile = sourceDir() / "resources/cells/kuka_kr16_2_positioner.cell";
+  const RobotCell cell(readCellFile(cellFile));
+  ASSERT_NE(cell.positioner(), nullptr);
+  std::vector<std::string> args = bendOnCell(dir, cellFile, "krl", "krl");
+  // A slower process (2 mm/s) keeps the table's rotation within its speed at 1 deg.
+  args.insert(args.end(),
+              {"--positioner-tolerance", "1", "--wfs", "1.6", "--torch-lead", "10", "--torch-side", "5"});
+  const CliRun r = runCli(args);
+  ASSERT_EQ(r.exitCode, 0) << r.err << r.out;
+
+  // Up: the build direction the positioner holds; b: the torch axis.
+  const auto up = columns(dir / "krl" / "trajectory.csv", {"ux", "uy", "uz", "bx", "by", "bz", "path"});
+  const auto e = columns(dir / "krl" / "joints.csv", {"e1", "e2"});
+  ASSERT_EQ(up.size(), e.size());
+  const double lean = std::atan(std::hypot(std::tan(degToRad(10.0)), std::tan(degToRad(5.0))));
+  double worstUp = 0.0, worstLean = 0.0;
+  for (size_t i = 0; i < up.size(); ++i) {
+    const Mat3 turn =
+        (cell.positioner()->forward({degToRad(e[i][0]), degToRad(e[i][1])}) * cell.setup().tablePart)
+            .linear();
+    const Vec3 u = turn * Vec3(up[i][0], up[i][1], up[i][2]).normalized();
+    const Vec3 b = turn * Vec3(up[i][3], up[i][4], up[i][5]).normalized();
+    worstUp = std::max(worstUp, radToDeg(std::acos(std::clamp(u.z(), -1.0, 1.0))));
+    worstLean = std::max(worstLean, std::abs(std::acos(std::clamp(u.dot(b), -1.0, 1.0)) - lean));
+  }
+  EXPECT_LE(worstUp, 1.0 + 1e-6);
+  EXPECT_LT(radToDeg(worstLean), 1e-6);
+
+  // The program as a controller runs it: every LIN target carries both external axes, and the torch,
+  // the tool's z axis in the robot's base frame, leans off the vertical by the tilt law's angle give
+  // or take the positioner's tolerance, except on the travel moves between sub-paths.
+  const KrlRun run = runKrl(dir / "krl", "spira_part");
+  EXPECT_TRUE(run.problems.empty()) << run.problems.front();
+  size_t lin = 0, atLean = 0;
+  for (const KrlMove& m : run.moves) {
+    if (m.motion != "LIN") continue;
+    ++lin;
+    EXPECT_TRUE(m.pose.e1.has_value() && m.pose.e2.has_value()) << m.target;
+    const Vec3 torch = krlPose(m.pose).linear().col(2);
+    const double off = radToDeg(std::acos(std::clamp(-torch.z(), -1.0, 1.0)));
+    // The targets are interpolated between planned points: a few hundredths of a degree more.
+    if (std::abs(off - radToDeg(lean)) <= 1.05) ++atLean;
+  }
+  EXPECT_GT(lin, 1000u);
+  // Not so: the travel between sub-paths, at most 4 targets each (travelBetween), the torch upright there.
+  const size_t subPaths = size_t(up.back()[6]) + 1;
+  EXPECT_LE(lin - atLean, 4 * (subPaths - 1)) << subPaths << " sub-paths";
+  std::printf(
+      "KUKA positioner, torch at %.3f deg: %zu of %zu LIN targets within 1 deg of it, beads within %.3f "
+      "deg of vertical\n",
+      radToDeg(lean), atLean, lin, worstUp);
 }
 
 }  // namespace

@@ -4,7 +4,9 @@
 #include <cstring>
 
 #include "spira/base/error.h"
+#include "spira/base/units.h"
 #include "spira/path/dwell.h"
+#include "spira/path/tool_tilt.h"
 #include "spira/planning/plan_files.h"
 #include "spira/planning/trajectory_csv_reader.h"
 
@@ -275,6 +277,37 @@ TEST(TrajectoryCsvDwell, DwellsAreFiniteWaitsWhereTheArcBurns)
   const size_t end0 = shortRow.find('\n', row0);
   shortRow.erase(shortRow.rfind(',', end0), end0 - shortRow.rfind(',', end0));
   EXPECT_NE(refusal(shortRow).find("line 2: expected 21 columns"), std::string::npos) << refusal(shortRow);
+}
+
+// A tilted torch's plan carries the build direction the positioner keeps vertical (tool_tilt.h), after
+// the dwell when there is one; it reads back exactly, and a zero direction is refused with its line.
+TEST(TrajectoryCsvUp, TheBuildDirectionOfATiltedTorchReadsBack)
+{
+  for (const Trajectory& source : {awkwardTrajectory(), dwellTrajectory()}) {
+    const Trajectory t = withTorchTilt(source, TorchTilt{degToRad(12.0), degToRad(-4.0)});
+    const std::string text = trajectoryCsv(t);
+    const std::string header = text.substr(0, text.find('\n'));
+    EXPECT_EQ(header.substr(header.size() - 9), ",ux,uy,uz");
+    EXPECT_EQ(header.find(",dwell_s") != std::string::npos, hasDwell(t));
+    const Trajectory back = trajectoryFromCsv(text);
+    ASSERT_EQ(back.size(), t.size());
+    for (size_t i = 0; i < t.size(); ++i) {
+      EXPECT_EQ(back.points[i].build, t.points[i].build);
+      EXPECT_EQ(upDirection(back, i), source.points[i].build);
+      EXPECT_EQ(dwellAt(back, i), dwellAt(t, i));
+    }
+  }
+  std::string text = trajectoryCsv(withTorchTilt(awkwardTrajectory(), TorchTilt{degToRad(12.0), 0.0}));
+  const size_t row3 = text.find("\n3,") + 1;
+  const size_t end = text.find('\n', row3);
+  const size_t ux = text.rfind(',', text.rfind(',', text.rfind(',', end - 1) - 1) - 1);
+  text.replace(ux, end - ux, ",0,0,0");
+  try {
+    trajectoryFromCsv(text, "t.csv");
+    FAIL() << "a zero build direction was read";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("t.csv line 5: column 22 (ux)"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace

@@ -14,6 +14,7 @@
 
 #include <gtest/gtest.h>
 
+#include <vtkActor.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataMapper.h>
 #include "builtin_plugins.h"
@@ -27,6 +28,7 @@
 #include "spira/ui/panels/placement_panel.h"
 #include "spira/ui/panels/simulation_panel.h"
 #include "spira/ui/views/cell_workspace.h"
+#include "spira/ui/views/path_layers.h"
 #include "spira/ui/views/robot_layer.h"
 #include "spira/ui/views/scene_view.h"
 #include "spira/ui/views/spiral_layer.h"
@@ -279,6 +281,13 @@ TEST(Placement, AFeatureIsPlannedOnAPipeChosenInTheDock)
   ASSERT_TRUE(doc.results().reports.spiral);
   EXPECT_TRUE(doc.results().reports.spiral->feasible);
   EXPECT_GE(doc.results().reports.spiral->depositCheck.heightMin, 1.8 - 0.01);
+  // The guide curve the layers were laid about is drawn through the tube: from the base edge's centre
+  // (on the pipe) round the bend of radius 50 to the end face's centre.
+  const Polyline& guide = doc.results().generatrices->guide;
+  ASSERT_GE(guide.size(), 10u);
+  for (const Vec3& q : guide) EXPECT_NEAR(std::hypot(q.x() + 50.0, q.z()), 50.0, 1.0) << q.transpose();
+  EXPECT_TRUE(w.sceneView()->pathLayers().hasGuide());
+  EXPECT_TRUE(w.sceneView()->pathLayers().guideActor()->GetVisibility());
   w.sceneView()->setCameraPreset(ui::CameraPreset::Iso);
   saveDocScreenshot(w.captureImage(), QStringLiteral("substrate-pipe.png"));
   panel->raise();

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "spira/base/error.h"
+#include "spira/path/tool_tilt.h"
 
 namespace spira {
 
@@ -18,14 +19,16 @@ DepositModel::DepositModel(const Trajectory& plan, const DepositParams& params, 
                      "give zero or more mm of fresh deposit to ignore behind the torch");
   const auto& pts = plan.points;
   const double radius = 0.5 * params.beadWidth;
-  const auto axisPoint = [&](const TrajectoryPoint& p) {
-    return params.topAtPath ? Vec3(p.position - radius * p.build.normalized()) : p.position;
+  // The bead lies along the build direction, whichever way the torch leans (tool_tilt.h).
+  const auto axisPoint = [&](size_t k) {
+    return params.topAtPath ? Vec3(pts[k].position - radius * upDirection(plan, k).normalized())
+                            : pts[k].position;
   };
   std::vector<Capsule> capsules;
   std::vector<uint32_t> keys;
   for (size_t k = 0; k + 1 < pts.size(); ++k) {
     if (!pts[k].arcOn) continue;
-    capsules.push_back({axisPoint(pts[k]), axisPoint(pts[k + 1]), radius});
+    capsules.push_back({axisPoint(k), axisPoint(k + 1), radius});
     keys.push_back(static_cast<uint32_t>(k));
   }
   capsules_ = CapsuleBvh(std::move(capsules), std::move(keys));

@@ -45,7 +45,10 @@ PlanReportSummary summaryOf(const SpiralStageReport& r, const ProcessStageReport
                             const MotionStageReport* motion)
 {
   PlanReportSummary s;
-  if (motion) s.cell = motion->cell;
+  if (motion) {
+    s.cell = motion->cell;
+    s.positionerToleranceDeg = motion->positionerToleranceDeg;
+  }
   s.partType = r.partType;
   s.revolutions = r.revolutions;
   s.heightMin = r.heightMin;

@@ -55,6 +55,8 @@ struct PlanReportSummary {
   std::int64_t flagged = 0;                       // points it rejects
   std::vector<DepositFlagSummary> flaggedPoints;  // the first 1000 of them
   std::optional<double> buildTime;                // s: "process"."build_time_s"
+  // The positioner's tolerance the motion was solved with (deg): a program's targets are solved with it.
+  std::optional<double> positionerToleranceDeg;
   // Laid in layers (constant distance): the layers, their distances to the one below (mm), the
   // sharpest kink (deg) and the arcs.
   struct Layers {

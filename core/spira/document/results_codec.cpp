@@ -23,7 +23,7 @@ constexpr int kResultsSchema = 2;
 // The codecs below list every member of these types. When a member is added, these fail to
 // compile as a reminder to store it too (and to bump kResultsSchema if old files lack it).
 static_assert(sizeof(void*) != 8 || sizeof(TrajectoryPoint) == 144, "update trajectoryToJson/FromJson");
-static_assert(sizeof(void*) != 8 || sizeof(Generatrices) == 80, "update generatricesToJson/FromJson");
+static_assert(sizeof(void*) != 8 || sizeof(Generatrices) == 104, "update generatricesToJson/FromJson");
 static_assert(sizeof(void*) != 8 || sizeof(JointPoint) == 256, "update jointsToJson/FromJson");
 static_assert(sizeof(void*) != 8 || sizeof(KinematicsCheck) == 32, "update kinematicsToJson/FromJson");
 
@@ -132,10 +132,12 @@ nlohmann::json generatricesToJson(const Generatrices& g)
   for (const Polyline& l : g.lines) lines.push_back(codec::vec3sToBlob(l));
   nlohmann::json normals = nlohmann::json::array();
   for (const auto& n : g.normals) normals.push_back(codec::vec3sToBlob(n));
-  return {{"lines", std::move(lines)},
-          {"normals", std::move(normals)},
-          {"has_closure_point", g.hasClosurePoint},
-          {"closure_point", codec::vec3sToBlob({g.closurePoint})}};
+  nlohmann::json j = {{"lines", std::move(lines)},
+                      {"normals", std::move(normals)},
+                      {"has_closure_point", g.hasClosurePoint},
+                      {"closure_point", codec::vec3sToBlob({g.closurePoint})}};
+  if (!g.guide.empty()) j["guide"] = codec::vec3sToBlob(g.guide);
+  return j;
 }
 
 Generatrices generatricesFromJson(const nlohmann::json& j, const std::string& what)
@@ -150,6 +152,7 @@ Generatrices generatricesFromJson(const nlohmann::json& j, const std::string& wh
   for (const auto& n : normals) g.normals.push_back(codec::blobToVec3s(n, what + " normals"));
   g.hasClosurePoint = codec::boolField(j, "has_closure_point", what);
   g.closurePoint = sized(codec::blobToVec3s(codec::field(j, "closure_point", what), what), 1, what)[0];
+  if (j.contains("guide")) g.guide = codec::blobToVec3s(j["guide"], what + " guide");
   return g;
 }
 

@@ -405,6 +405,8 @@ struct MotionStageReport {
   std::optional<std::int64_t> maxJointSpeedPoint;
   JointSpeedRecord jointSpeed;
   std::optional<std::map<std::string, std::array<double, 2>>> positionerRange;  // deg, per axis
+  // How far the positioner may leave the build direction off the vertical (deg); with a positioner.
+  std::optional<double> positionerToleranceDeg;
   double maxCableTwistDeg = 0.0, cableTwistLimitDeg = 0.0;
   bool withinCableTwistLimit = true;
   std::int64_t collisions = 0, collisionsDetected = 0, collisionsResolved = 0;
@@ -427,6 +429,7 @@ struct MotionStageReport {
     io("max_joint_speed_axis", s.maxJointSpeedAxis),
         io.nullable("max_joint_speed_point", s.maxJointSpeedPoint);
     io("joint_speed", s.jointSpeed), io.optional("positioner_range_deg", s.positionerRange);
+    io.optional("positioner_tolerance_deg", s.positionerToleranceDeg);
     io("max_cable_twist_deg", s.maxCableTwistDeg), io("cable_twist_limit_deg", s.cableTwistLimitDeg);
     io("within_cable_twist_limit", s.withinCableTwistLimit), io("collisions", s.collisions);
     io("collision_indices", s.collisionIndices), io("collisions_detected", s.collisionsDetected);

@@ -6,6 +6,7 @@
 
 #include "spira/base/units.h"
 #include "spira/kinematics/angle_wrap.h"
+#include "spira/path/tool_tilt.h"
 
 namespace spira {
 
@@ -86,7 +87,7 @@ PositionerPath placeOnPositioner(const Trajectory& path, const JointPathSetup& s
   for (size_t i = 0; i < path.size(); ++i) {
     if (i % kCancelStride == 0) progress.checkCancel();
     const TrajectoryPoint& point = path.points[i];
-    const Vec3 buildInTable = (setup.tablePart.linear() * point.build).normalized();
+    const Vec3 buildInTable = (setup.tablePart.linear() * upDirection(path, i)).normalized();
     Vec3 offAxis = setup.tablePart * point.position - axis.point;
     offAxis -= offAxis.dot(axis.direction) * axis.direction;
     // The table turns the part by the point's own turn about the axis, so the point stays put;

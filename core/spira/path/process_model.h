@@ -57,6 +57,11 @@ struct ProcessSettings {
   // How far from the vertical (rad) a positioner may leave the build direction (the flat welding
   // position); within it the table's rotation is free, so a spiral's climb does not whip it round.
   double positionerTiltTolerance = degToRad(2.0);
+  // The torch's angles off the build direction (rad, tool_tilt.h): lead towards the travel direction
+  // (push positive), side towards the surface normal. Zero: the torch follows b, as in the source's
+  // experiments.
+  double torchLead = 0.0;
+  double torchSide = 0.0;
 };
 
 enum class ProcessViolationKind {

@@ -49,10 +49,13 @@ struct Generatrices {
   std::vector<std::vector<Vec3>> normals;
   bool hasClosurePoint = false;
   Vec3 closurePoint = Vec3::Zero();
+  // A tube's guide curve, base end first, that its layers were laid about (constant distance); empty
+  // for the other strategies.
+  Polyline guide;
   bool operator==(const Generatrices& o) const
   {
     return lines == o.lines && normals == o.normals && hasClosurePoint == o.hasClosurePoint &&
-           closurePoint == o.closurePoint;
+           closurePoint == o.closurePoint && guide == o.guide;
   }
 };
 

@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "spira/base/error.h"
+#include "spira/base/units.h"
 #include "spira/export/export_path.h"
 #include "spira/path/dwell.h"
 #include "spira/pipeline/plan_motion.h"
@@ -205,6 +206,8 @@ ExportOutcome exportTrajectory(const PluginRegistry& registry, const Trajectory&
     // so the program's joints are exactly those of its own targets; one solve per sub-path.
     MotionSettings ms;
     ms.optimiseSpin = job.optimiseSpin;
+    if (job.positionerToleranceDeg)
+      ms.process.positionerTiltTolerance = degToRad(*job.positionerToleranceDeg);
     joints = solveSubPaths(*job.cell, program, motionParamsFor(*job.cell, ms), ikProgress).joints;
     for (size_t i = 0; i < joints.points.size(); ++i) {
       out.unreachableTargets += !joints.points[i].reachable;

@@ -2,6 +2,7 @@
 
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -21,6 +22,9 @@ struct ExportJob {
   PrepParams prep;
   const RobotCell* cell = nullptr;
   bool optimiseSpin = true;  // layer-wise torch spin on the prepared points (plan_motion.h)
+  // The plan's positioner tolerance (deg, PlanReportSummary::positionerToleranceDeg): the targets keep
+  // the build direction as close to the vertical as the plan did. None: the process default.
+  std::optional<double> positionerToleranceDeg;
   // Per planned point, whether the plan left it in collision (torch or robot links, as
   // solvePlanMotion found); empty when unknown. The program's targets standing for such points
   // are flagged "in collision" (refused unless the exporter's `force` is set). Needs a cell.

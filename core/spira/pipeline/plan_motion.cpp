@@ -8,6 +8,7 @@
 #include "spira/base/units.h"
 #include "spira/collision/collision_resolver.h"
 #include "spira/motion/motion_solver.h"
+#include "spira/path/tool_tilt.h"
 #include "spira/pipeline/sub_paths.h"
 #include "spira/planning/plan_schemas.h"
 #include "spira/robotcell/robot_collision_model.h"
@@ -153,10 +154,14 @@ MotionSettings motionSettingsFrom(const PlanSections& sections)
   return m;
 }
 
-PlanMotion solvePlanMotion(const RobotCell& cell, const Trajectory& plan, const MotionSettings& settings,
+PlanMotion solvePlanMotion(const RobotCell& cell, const Trajectory& planned, const MotionSettings& settings,
                            Progress& progress)
 {
   PlanMotion out;
+  // The torch's own angles come first: collisions are checked, and resolved, on the torch as held.
+  const TorchTilt torch{settings.process.torchLead, settings.process.torchSide};
+  const Trajectory tilted = torch.any() ? withTorchTilt(planned, torch) : Trajectory{};
+  const Trajectory& plan = torch.any() ? tilted : planned;
   DepositParams deposit;
   deposit.beadWidth = settings.beadWidth;
   CollisionScene scene;
@@ -232,7 +237,10 @@ PlanMotion solvePlanMotion(const RobotCell& cell, const Trajectory& plan, const 
   r.maxJointSpeedAxis = m.maxSpeedRatioAxis;
   r.maxJointSpeedPoint = indexOrNone(m.maxSpeedRatioPoint);
   r.jointSpeed = jointSpeedRecord(m, out, settings);
-  if (out.joints.hasPositioner) r.positionerRange = positionerRange(out.joints);
+  if (out.joints.hasPositioner) {
+    r.positionerRange = positionerRange(out.joints);
+    r.positionerToleranceDeg = radToDeg(settings.process.positionerTiltTolerance);
+  }
   r.maxCableTwistDeg = m.maxCableTwistDeg;
   r.cableTwistLimitDeg = cell.record().cableTwistLimitDeg;
   r.withinCableTwistLimit = m.withinCableTwistLimit;

@@ -48,6 +48,7 @@ void PlacementFrame::toPart(Generatrices& generatrices) const
   for (auto& normals : generatrices.normals)
     for (Vec3& n : normals) n = Rt * n;
   generatrices.closurePoint = Rt * generatrices.closurePoint;
+  for (Vec3& q : generatrices.guide) q = Rt * q;
 }
 
 namespace {

@@ -4,6 +4,7 @@
 
 #include "spira/base/number_text.h"
 #include "spira/path/dwell.h"
+#include "spira/path/tool_tilt.h"
 
 namespace spira {
 namespace {
@@ -25,7 +26,10 @@ std::string trajectoryCsv(const Trajectory& trajectory)
   // The dwell column only when a dwell is planned: plans without one keep the file they always had.
   const bool dwell = hasDwell(trajectory);
   std::string out = "index,x,y,z,nx,ny,nz,tx,ty,tz,bx,by,bz,rev,gen,height,ts,wfs,arc,path";
-  out += dwell ? ",dwell_s\n" : "\n";
+  // The up direction only for a tilted torch, whose b is not the direction a positioner keeps vertical.
+  const bool up = trajectory.extra.count(kUpChannels[0]) != 0;
+  out += dwell ? ",dwell_s" : "";
+  out += up ? ",ux,uy,uz\n" : "\n";
   out.reserve(out.size() + trajectory.size() * 224);
   for (size_t i = 0; i < trajectory.size(); ++i) {
     const TrajectoryPoint& p = trajectory.points[i];
@@ -49,6 +53,11 @@ std::string trajectoryCsv(const Trajectory& trajectory)
     if (dwell) {
       out += ',';
       appendNumber(out, dwellAt(trajectory, i));
+    }
+    if (up) {
+      out += ',';
+      putVec(out, upDirection(trajectory, i));
+      out.pop_back();  // putVec's trailing comma
     }
     out += '\n';
   }

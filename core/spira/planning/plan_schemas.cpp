@@ -179,6 +179,21 @@ const ProcessBinding& processBinding()
                "whip it round; smaller keeps the beads more level at the cost of more rotation.",
                "Limits"}),
           [](StoredProcess& p) -> double& { return p.positionerTiltTolerance; }),
+      ProcessBinding::number(
+          numberParam("torch_lead", 0.0, -45.0, 45.0, "deg",
+                      {"Torch lead angle",
+                       "Leans the torch off the build direction towards the travel direction (positive: "
+                       "pushing) in the advance plane, theta_n of the source's tilt law. The bead is still "
+                       "laid along the build direction, which a positioner keeps vertical.",
+                       "Torch"}),
+          [](StoredProcess& p) -> double& { return p.torchLead; }),
+      ProcessBinding::number(
+          numberParam("torch_side", 0.0, -45.0, 45.0, "deg",
+                      {"Torch side angle",
+                       "Leans the torch off the build direction towards the surface normal (positive: to the "
+                       "outside of a wall), theta_t of the source's tilt law.",
+                       "Torch"}),
+          [](StoredProcess& p) -> double& { return p.torchSide; }),
   });
   return binding;
 }

@@ -2,25 +2,25 @@
 
 #include <charconv>
 #include <cmath>
+#include <string_view>
+#include <vector>
 
 #include "spira/base/atomic_file.h"
 #include "spira/base/error.h"
 #include "spira/base/number_text.h"
 #include "spira/path/dwell.h"
+#include "spira/path/tool_tilt.h"
 
 namespace spira {
 namespace {
 
 constexpr const char* kHeader = "index,x,y,z,nx,ny,nz,tx,ty,tz,bx,by,bz,rev,gen,height,ts,wfs,arc,path";
-// Plans with a dwell (path/dwell.h) carry one more column.
-constexpr const char* kDwellHeader =
-    "index,x,y,z,nx,ny,nz,tx,ty,tz,bx,by,bz,rev,gen,height,ts,wfs,arc,path,dwell_s";
 // Plans written before multi-branch parts had no path column: one path.
 constexpr const char* kSinglePathHeader = "index,x,y,z,nx,ny,nz,tx,ty,tz,bx,by,bz,rev,gen,height,ts,wfs,arc";
-constexpr int kMaxColumns = 21;
-constexpr const char* kColumnNames[kMaxColumns] = {"index", "x",      "y",  "z",   "nx",  "ny",   "nz",
-                                                   "tx",    "ty",     "tz", "bx",  "by",  "bz",   "rev",
-                                                   "gen",   "height", "ts", "wfs", "arc", "path", "dwell_s"};
+constexpr int kAllColumns = 24;
+constexpr const char* kColumnNames[kAllColumns] = {
+    "index", "x",   "y",   "z",      "nx", "ny",  "nz",  "tx",   "ty",      "tz", "bx", "by",
+    "bz",    "rev", "gen", "height", "ts", "wfs", "arc", "path", "dwell_s", "ux", "uy", "uz"};
 enum Column {
   kIndex = 0,
   kRev = 13,
@@ -30,8 +30,35 @@ enum Column {
   kWfs = 17,
   kArc = 18,
   kPath = 19,
-  kDwell = 20
+  kDwell = 20,
+  kUp = 21
 };
+
+// The columns a header names, in file order (semantic Column values), or empty when it is not one
+// trajectoryCsv writes: the fixed columns, then a dwell (path/dwell.h) and the up direction of a
+// tilted torch (path/tool_tilt.h) when the plan has them.
+std::vector<int> layoutOf(std::string_view header)
+{
+  std::vector<int> layout;
+  if (header == kSinglePathHeader) {
+    for (int c = 0; c < kPath; ++c) layout.push_back(c);
+    return layout;
+  }
+  const std::string_view fixed(kHeader);
+  if (header.substr(0, fixed.size()) != fixed) return layout;
+  for (int c = 0; c <= kPath; ++c) layout.push_back(c);
+  std::string_view rest = header.substr(fixed.size());
+  if (rest.substr(0, 8) == ",dwell_s") {
+    layout.push_back(kDwell);
+    rest.remove_prefix(8);
+  }
+  if (rest.substr(0, 9) == ",ux,uy,uz") {
+    for (int c = kUp; c < kUp + 3; ++c) layout.push_back(c);
+    rest.remove_prefix(9);
+  }
+  if (!rest.empty()) layout.clear();
+  return layout;
+}
 
 bool whole(double x)
 {
@@ -44,7 +71,8 @@ Trajectory trajectoryFromCsv(const std::string& text, const std::string& what)
 {
   Trajectory t;
   size_t pos = 0, lineNo = 0;
-  int columns = kMaxColumns - 1;
+  std::vector<int> layout;
+  bool hasUp = false;
   const auto fail = [&](const std::string& problem) -> void {
     throw InputError(what + " line " + std::to_string(lineNo) + ": " + problem,
                      "use the trajectory.csv that 'spira-cli plan' wrote, unedited");
@@ -60,25 +88,24 @@ Trajectory trajectoryFromCsv(const std::string& text, const std::string& what)
     ++lineNo;
     if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
     if (lineNo == 1) {
-      if (line == kSinglePathHeader)
-        columns = kMaxColumns - 2;
-      else if (line == kDwellHeader)
-        columns = kMaxColumns;
-      else if (line != kHeader)
-        fail("the header is not '" + std::string(kHeader) + "'");
+      layout = layoutOf(line);
+      if (layout.empty()) fail("the header is not '" + std::string(kHeader) + "'");
+      hasUp = layout.back() == kUp + 2;
       continue;
     }
     if (line.empty()) continue;
-    double v[kMaxColumns] = {};
+    const int columns = static_cast<int>(layout.size());
+    double v[kAllColumns] = {};
     int col = 0;
     size_t at = 0;
     while (col < columns) {
       const size_t comma = std::min(line.find(',', at), line.size());
       const char* first = line.data() + at;
       const char* last = line.data() + comma;
-      const auto res = std::from_chars(first, last, v[col]);
-      if (res.ec != std::errc() || res.ptr != last || !std::isfinite(v[col]))
-        failAt(col,
+      const int c = layout[static_cast<size_t>(col)];
+      const auto res = std::from_chars(first, last, v[c]);
+      if (res.ec != std::errc() || res.ptr != last || !std::isfinite(v[c]))
+        failAt(c,
                "is not a finite number, found '" + clippedText(std::string_view(first, last - first)) + "'");
       ++col;
       at = comma + 1;
@@ -113,6 +140,8 @@ Trajectory trajectoryFromCsv(const std::string& text, const std::string& what)
     if (v[kDwell] > 0 && v[kArc] != 1)
       failAt(kDwell, "must be 0 where the arc is off (a dwell stops the arc), found " +
                          significantText(v[kDwell], 6));
+    if (hasUp && Vec3(v[kUp], v[kUp + 1], v[kUp + 2]).norm() < 1e-9)
+      failAt(kUp, "must hold, with uy and uz, the build direction (a unit vector), found zero");
     TrajectoryPoint p;
     p.position = Vec3(v[1], v[2], v[3]);
     p.normal = Vec3(v[4], v[5], v[6]);
@@ -126,7 +155,9 @@ Trajectory trajectoryFromCsv(const std::string& text, const std::string& what)
     p.arcOn = v[18] != 0.0;
     p.path = static_cast<int>(v[19]);
     t.points.push_back(p);
-    if (columns == kMaxColumns) t.extra[kDwellChannel].push_back(v[kDwell]);
+    t.extra[kDwellChannel].push_back(v[kDwell]);
+    if (hasUp)
+      for (int k = 0; k < 3; ++k) t.extra[kUpChannels[k]].push_back(v[kUp + k]);
   }
   if (lineNo == 0) fail("the file is empty");
   // As trajectoryCsv writes the column: a column of zeros plans no dwell, so it reads as none.

@@ -47,6 +47,7 @@ ExportRequest makeExportRequest(const Results& results, const std::string& partN
   r.header = programHeader(partName, cell ? cell->name : std::string(), plan ? *plan : PlanReportSummary(),
                            std::time(nullptr));
   if (!plan) r.header.erase("plan");
+  if (plan) r.positionerToleranceDeg = plan->positionerToleranceDeg;
   return r;
 }
 
@@ -68,6 +69,7 @@ ExportOutcome run(const PluginRegistry& registry, const ExportRequest& request,
   job.prep = prepParamsFrom(request.prepParams);
   job.cell = cell ? &*cell : nullptr;
   job.header = request.header;
+  job.positionerToleranceDeg = request.positionerToleranceDeg;
   if (job.cell)
     job.plannedCollision = request.plannedCollision;  // collisions need the cell they were found with
   return exportTrajectory(registry, *request.trajectory, job, outDir, progress);

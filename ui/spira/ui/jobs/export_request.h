@@ -30,6 +30,7 @@ struct ExportRequest {
   ParamSet exporterParams;
   ParamSet prepParams;  // the "prep" schema (prep_schema.h)
   std::map<std::string, std::string> header;
+  std::optional<double> positionerToleranceDeg;  // the plan's (ExportJob)
 };
 
 // The request for `results` of a document with this part name and cell; the header names the

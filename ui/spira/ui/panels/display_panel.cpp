@@ -100,7 +100,11 @@ QGroupBox* DisplayPanel::buildPathsBox(QWidget* body)
   closure_ = new QCheckBox(tr("Closure point"), pathsBox);
   closure_->setChecked(true);
   closure_->setToolTip(tr("Closed parts: where the spiral ends"));
+  guide_ = new QCheckBox(tr("Guide curve"), pathsBox);
+  guide_->setChecked(true);
+  guide_->setToolTip(tr("Tubes (constant distance): the centre line the layers are laid about"));
   pathsLayout->addWidget(generatrices_);
+  pathsLayout->addWidget(guide_);
   pathsLayout->addWidget(closure_);
   return pathsBox;
 }
@@ -189,6 +193,10 @@ void DisplayPanel::connectControls()
     view_->pathLayers().setClosureVisible(on);
     render();
   });
+  connect(guide_, &QCheckBox::toggled, this, [this](bool on) {
+    view_->pathLayers().setGuideVisible(on);
+    render();
+  });
   connect(spiral_, &QCheckBox::toggled, this, [this](bool on) {
     view_->spiralLayer().setVisible(on);
     render();
@@ -234,6 +242,7 @@ void DisplayPanel::resultsChanged()
   generatrices_->setText(
       paths.stride() > 1 ? tr("Generatrices (1 in %1 of %2)").arg(paths.stride()).arg(paths.generatrixCount())
                          : tr("Generatrices"));
+  guide_->setEnabled(paths.hasGuide());
   spiralBox_->setEnabled(spiral.hasTrajectory());
   if (auto* model = qobject_cast<QStandardItemModel*>(channel_->model())) {
     for (int c = 0; c < kSpiralChannelCount; ++c)

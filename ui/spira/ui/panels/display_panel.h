@@ -83,6 +83,7 @@ class DisplayPanel : public QDockWidget {
   QSpinBox* isoLines_ = nullptr;
   QCheckBox* generatrices_ = nullptr;
   QCheckBox* closure_ = nullptr;
+  QCheckBox* guide_ = nullptr;
   QGroupBox* spiralBox_ = nullptr;
   QCheckBox* spiral_ = nullptr;
   QComboBox* channel_ = nullptr;

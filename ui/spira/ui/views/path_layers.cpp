@@ -19,6 +19,29 @@
 
 namespace spira::ui {
 
+namespace {
+
+// Adds `line` (part frame) to the cells as one polyline, placed by T_world_part.
+void addPolyline(vtkPoints* points, vtkCellArray* cells, const Polyline& line, const Transform& T_world_part)
+{
+  cells->InsertNextCell(static_cast<vtkIdType>(line.size()));
+  for (const Vec3& v : line) {
+    const Vec3 w = T_world_part * v;
+    cells->InsertCellPoint(points->InsertNextPoint(w.x(), w.y(), w.z()));
+  }
+}
+
+// Replaces the lines of `data`; whether it holds any.
+bool setPolylines(vtkPolyData* data, vtkPoints* points, vtkCellArray* cells)
+{
+  data->Initialize();
+  data->SetPoints(points);
+  data->SetLines(cells);
+  return cells->GetNumberOfCells() > 0;
+}
+
+}  // namespace
+
 PathLayers::PathLayers(vtkRenderer* renderer)
 {
   linesMapper_->SetInputData(polylines_);
@@ -32,6 +55,16 @@ PathLayers::PathLayers(vtkRenderer* renderer)
   p->LightingOff();
   lines_->VisibilityOff();
   renderer->AddActor(lines_);
+
+  guideMapper_->SetInputData(guideLine_);
+  guideMapper_->ScalarVisibilityOff();
+  guide_->SetMapper(guideMapper_);
+  vtkProperty* g = guide_->GetProperty();
+  g->SetColor(0.05, 0.05, 0.05);  // apart from the height colour map and its magenta
+  g->SetLineWidth(3.0);
+  g->LightingOff();
+  guide_->VisibilityOff();
+  renderer->AddActor(guide_);
 
   sphere_->SetThetaResolution(24);
   sphere_->SetPhiResolution(16);
@@ -71,19 +104,15 @@ void PathLayers::setGeneratrices(const Generatrices* g, const Transform& T_world
   stride_ = std::max(1, (generatrixCount_ + kMaxLines - 1) / kMaxLines);
   if (g) {
     for (size_t i = 0; i < g->lines.size(); i += static_cast<size_t>(stride_)) {
-      const Polyline& line = g->lines[i];
-      if (line.size() < 2) continue;
-      cells->InsertNextCell(static_cast<vtkIdType>(line.size()));
-      for (const Vec3& v : line) {
-        const Vec3 w = T_world_part * v;
-        cells->InsertCellPoint(points->InsertNextPoint(w.x(), w.y(), w.z()));
-      }
+      if (g->lines[i].size() >= 2) addPolyline(points, cells, g->lines[i], T_world_part);
     }
   }
-  polylines_->Initialize();
-  polylines_->SetPoints(points);
-  polylines_->SetLines(cells);
-  hasLines_ = cells->GetNumberOfCells() > 0;
+  hasLines_ = setPolylines(polylines_, points, cells);
+  vtkNew<vtkPoints> guidePoints;
+  guidePoints->SetDataTypeToDouble();
+  vtkNew<vtkCellArray> guideCells;
+  if (g && g->guide.size() >= 2) addPolyline(guidePoints, guideCells, g->guide, T_world_part);
+  hasGuide_ = setPolylines(guideLine_, guidePoints, guideCells);
   closure_.reset();
   if (g && g->hasClosurePoint) {
     const Vec3 c = T_world_part * g->closurePoint;
@@ -115,6 +144,12 @@ void PathLayers::setGeneratricesVisible(bool on)
   updateVisibility();
 }
 
+void PathLayers::setGuideVisible(bool on)
+{
+  guideVisible_ = on;
+  updateVisibility();
+}
+
 void PathLayers::setClosureVisible(bool on)
 {
   closureVisible_ = on;
@@ -129,6 +164,7 @@ long long PathLayers::lineCount() const
 void PathLayers::updateVisibility()
 {
   lines_->SetVisibility(linesVisible_ && hasLines_);
+  guide_->SetVisibility(guideVisible_ && hasGuide_);
   const bool marker = closureVisible_ && closure_.has_value();
   marker_->SetVisibility(marker);
   caption_->SetVisibility(marker);

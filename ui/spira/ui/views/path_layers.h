@@ -20,7 +20,8 @@ struct Generatrices;
 namespace spira::ui {
 
 // The decomposition of a plan in the 3D view: the generatrices as thin polylines from the base
-// up, and the closure point (closed parts) as a marked sphere with a caption.
+// up, a tube's guide curve (constant distance) as a thick line through the tube, and the closure
+// point (closed parts) as a marked sphere with a caption.
 class PathLayers {
  public:
   explicit PathLayers(vtkRenderer* renderer);
@@ -33,6 +34,9 @@ class PathLayers {
   bool generatricesVisible() const { return linesVisible_; }
   void setClosureVisible(bool on);
   bool closureVisible() const { return closureVisible_; }
+  void setGuideVisible(bool on);
+  bool guideVisible() const { return guideVisible_; }
+  bool hasGuide() const { return hasGuide_; }
 
   // Polylines drawn: every stride-th generatrix, so that at most kMaxLines show (hundreds of
   // lines side by side only make a moire).
@@ -48,6 +52,7 @@ class PathLayers {
   Vec3 captionAnchor() const;
   vtkActor* linesActor() const { return lines_; }
   vtkActor* closureActor() const { return marker_; }
+  vtkActor* guideActor() const { return guide_; }
 
  private:
   void updateVisibility();
@@ -55,6 +60,9 @@ class PathLayers {
   vtkNew<vtkPolyData> polylines_;
   vtkNew<vtkPolyDataMapper> linesMapper_;
   vtkNew<vtkActor> lines_;
+  vtkNew<vtkPolyData> guideLine_;
+  vtkNew<vtkPolyDataMapper> guideMapper_;
+  vtkNew<vtkActor> guide_;
   vtkNew<vtkSphereSource> sphere_;
   vtkNew<vtkPolyDataMapper> markerMapper_;
   vtkNew<vtkActor> marker_;
@@ -63,6 +71,8 @@ class PathLayers {
   Transform motion_ = Transform::Identity();
   bool linesVisible_ = false;
   bool closureVisible_ = true;
+  bool guideVisible_ = true;
+  bool hasGuide_ = false;
   bool hasLines_ = false;
   int stride_ = 1;
   int generatrixCount_ = 0;
