@@ -9,6 +9,7 @@
 #include <QDoubleSpinBox>
 #include <QLabel>
 #include <QPushButton>
+#include <QSignalSpy>
 #include <QTabWidget>
 #include <QTest>
 
@@ -244,6 +245,34 @@ TEST(Placement, LevelBaseCutsASlantBaseLevelAndThePartThenPlans)
   saveDocScreenshot(w.captureImage(), QStringLiteral("level-base.png"));
   doc.undo();
   EXPECT_EQ(doc.part()->mesh, original);
+}
+
+// A substrate mesh from a file is read in the background, then set in one undo step; a file that
+// cannot be read leaves the document as it was and says why.
+TEST(Placement, ASubstrateFileIsReadInTheBackground)
+{
+  TempDir dir;
+  Document doc;
+  MainWindow w(doc, builtinRegistry(), MainWindowOptions{false, false});
+  showAndWait(w);
+  const std::filesystem::path pipe = dir.path() / "pipe.stl";
+  writeMesh(makePipeAbout(32.0, 'y', 120.0), pipe, MeshFileFormat::StlBinary);
+  QSignalSpy read(&w, &MainWindow::substrateRead);
+  const size_t steps = doc.undoStack().count();
+  ASSERT_TRUE(w.useSubstrateFile(qpath(pipe)));
+  ASSERT_TRUE(waitFor([&] { return read.count() == 1; }, 30000));
+  EXPECT_TRUE(read.at(0).at(1).toBool());
+  ASSERT_EQ(doc.substrate()->kind, Substrate::Kind::Mesh);
+  EXPECT_EQ(doc.substrate()->mesh->faceCount(), makePipeAbout(32.0, 'y', 120.0).faceCount());
+  EXPECT_EQ(doc.undoStack().count(), steps + 1);
+
+  const auto before = doc.substrate();
+  ASSERT_TRUE(w.useSubstrateFile(qpath(dir.path() / "missing.stl")));
+  ASSERT_TRUE(waitFor([&] { return read.count() == 2; }, 30000));
+  EXPECT_FALSE(read.at(1).at(1).toBool());
+  EXPECT_EQ(doc.substrate(), before);
+  EXPECT_NE(w.lastErrorMessage().indexOf(QStringLiteral("missing.stl")), -1)
+      << w.lastErrorMessage().toStdString();
 }
 
 // A feature added onto a pipe (the source's quarter torus on a 64 mm pipe): the Placement dock's Pipe

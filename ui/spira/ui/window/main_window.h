@@ -108,8 +108,9 @@ class MainWindow : public QMainWindow {
   CellWorkspace* cellWorkspace() const { return cellWorkspace_; }
   // Placement, presets, themes, help and autosave (comfort_features.h).
   ComfortFeatures* comfortFeatures() const { return comfort_; }
-  // Builds the part on the surface in `path` (a pipe, a curved plate, a previous part), one undo step;
-  // false (the error shown) when it cannot be read.
+  // Builds the part on the surface in `path` (a pipe, a curved plate, a previous part), one undo step.
+  // The file is read in the background (progress and Cancel in the status bar); substrateRead() says
+  // how it went, the error shown when it cannot be read. False when another task runs.
   bool useSubstrateFile(const QString& path);
   // File > Export Robot Program (made on first use).
   ExportDialog* exportDialog();
@@ -120,6 +121,7 @@ class MainWindow : public QMainWindow {
 
  signals:
   void fileOpened(const QString& path, bool ok);
+  void substrateRead(const QString& path, bool ok);
   void planFinished(const spira::ui::TaskOutcome& outcome);
 
  protected:

@@ -231,21 +231,42 @@ void MainWindow::chooseSubstrateMesh()
 
 bool MainWindow::useSubstrateFile(const QString& path)
 {
-  try {
-    NullProgress progress;
-    ImportedPart imported = importPart(registry_, path.toStdString(), nullptr, progress);
-    auto mesh = std::make_shared<const TriangleMesh>(std::move(imported.mesh));
-    doc_.setSubstrate(Substrate::fromMesh(std::move(mesh), QFileInfo(path).completeBaseName().toStdString(),
-                                          path.toStdString()),
-                      tr("Build on %1").arg(QFileInfo(path).fileName()).toStdString());
-    log_->info(tr("Substrate: %1 (%2 triangles). The part's base edge must lie on it.")
-                   .arg(QFileInfo(path).fileName())
-                   .arg(doc_.substrate()->mesh->faceCount()));
-    return true;
-  } catch (const Error& e) {
-    reportError(tr("Substrate"), fromStd(e.what()), fromStd(e.hint()));
+  if (busy()) {
+    reportError(tr("Substrate"), tr("Cannot read %1 while another task runs.").arg(path),
+                tr("Wait for it to finish or cancel it."));
     return false;
   }
+  const PluginRegistry& registry = registry_;
+  auto result = std::make_shared<ImportedPart>();
+  const std::filesystem::path file = toPath(path);
+  const QString name = QFileInfo(path).fileName();
+  tasks_->start(
+      tr("Reading the substrate %1").arg(name),
+      [&registry, result, file](Progress& progress) {
+        *result = importPart(registry, file, nullptr, progress);
+      },
+      [this, path, name, result](const TaskOutcome& outcome) {
+        if (outcome.status == TaskOutcome::Status::Cancelled) {
+          log_->info(tr("Reading the substrate %1 cancelled; the document is unchanged.").arg(name));
+          emit substrateRead(path, false);
+          return;
+        }
+        if (!outcome.succeeded()) {
+          reportError(tr("Substrate"), outcome.message, outcome.hint);
+          emit substrateRead(path, false);
+          return;
+        }
+        auto mesh = std::make_shared<const TriangleMesh>(std::move(result->mesh));
+        doc_.setSubstrate(
+            Substrate::fromMesh(std::move(mesh), QFileInfo(path).completeBaseName().toStdString(),
+                                path.toStdString()),
+            tr("Build on %1").arg(name).toStdString());
+        log_->info(tr("Substrate: %1 (%2 triangles). The part's base edge must lie on it.")
+                       .arg(name)
+                       .arg(doc_.substrate()->mesh->faceCount()));
+        emit substrateRead(path, true);
+      });
+  return true;
 }
 
 void MainWindow::chooseOpen()
