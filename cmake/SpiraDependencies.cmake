@@ -7,6 +7,18 @@ find_package(assimp REQUIRED)
 find_package(urdfdom REQUIRED)
 find_package(OpenCASCADE REQUIRED)
 find_package(CGAL REQUIRED)
+# PCL (libpcl-dev) for scans: voxel grid, outlier removal, k-d trees, normals and ICP registration. Its
+# headers are included by core/spira/scan/scan_pcl.cpp alone.
+find_package(PCL 1.13 REQUIRED COMPONENTS common kdtree search filters features registration)
+# PCL's own targets carry VTK's and Qt's include directories and definitions for its other modules;
+# these modules use neither, so only their headers and libraries are named.
+set(spira_pcl_libraries FLANN::FLANN)
+foreach(module COMMON KDTREE OCTREE SEARCH SAMPLE_CONSENSUS FILTERS FEATURES REGISTRATION)
+  list(APPEND spira_pcl_libraries ${PCL_${module}_LIBRARY})
+endforeach()
+add_library(Spira::pcl INTERFACE IMPORTED)
+set_target_properties(Spira::pcl PROPERTIES INTERFACE_INCLUDE_DIRECTORIES "${PCL_COMMON_INCLUDE_DIR}"
+  INTERFACE_LINK_LIBRARIES "${spira_pcl_libraries}")
 
 # SuiteSparse 5.x in Debian ships no CMake package: find CHOLMOD by hand.
 find_path(CHOLMOD_INCLUDE_DIR cholmod.h PATH_SUFFIXES suitesparse REQUIRED)

@@ -15,6 +15,7 @@ $SUDO apt-get install -y -qq --no-install-recommends \
   libeigen3-dev libassimp-dev liburdfdom-dev liburdfdom-headers-dev libtinyxml-dev \
   libsuitesparse-dev libopenblas0-pthread libtbb-dev nlohmann-json3-dev \
   libpetsc-real-dev openmpi-bin \
+  libpcl-dev \
   libgtest-dev libgmock-dev \
   xvfb xauth libgl1-mesa-dri mesa-utils \
   >/dev/null

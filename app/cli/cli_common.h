@@ -69,5 +69,7 @@ int cmdKin(const std::vector<std::string>& args);
 int cmdExport(const std::vector<std::string>& args);
 int cmdCompare(const std::vector<std::string>& args);
 int cmdThermal(const std::vector<std::string>& args);
+int cmdScanCompare(const std::vector<std::string>& args);
+int cmdScanSim(const std::vector<std::string>& args);
 
 }  // namespace spira::cli

@@ -24,6 +24,8 @@ constexpr const char* kUsageText =
     "probes.csv\n"
     "  kin CELL --fk J1..J6 | --ik X Y Z A B C   forward / inverse kinematics of a cell's robot\n"
     "  export PLAN_DIR --format krl|fanuc_tp -o DIR   robot program of a plan\n"
+    "  scan-compare PART SCAN -o DIR   a scan aligned to the part and its deviation map\n"
+    "  scan-sim PART -o SCAN.ply   a simulated scan of a part (noise, growth, misalignment)\n"
     "  sample NAME -o FILE   write a bundled sample part (open-cylinder, dome, cone) made in code\n"
     "\n"
     "options: --help (also after a command), --version, --threads N (at most N threads; also the\n"
@@ -43,6 +45,8 @@ int dispatch(const std::string& command, const std::vector<std::string>& rest)
   if (command == "export") return cmdExport(rest);
   if (command == "compare") return cmdCompare(rest);
   if (command == "thermal") return cmdThermal(rest);
+  if (command == "scan-compare") return cmdScanCompare(rest);
+  if (command == "scan-sim") return cmdScanSim(rest);
   throw UsageError("unknown command '" + command + "'", "run 'spira-cli --help' for the list of commands");
 }
 

@@ -65,13 +65,10 @@ bool isQtOrVtk(const std::string& header)
 std::string libraryOf(const std::string& header)
 {
   static const std::vector<std::pair<std::string, std::string>> prefixes = {
-      {"Eigen/", "Eigen3::Eigen"},
-      {"nlohmann/", "nlohmann_json::nlohmann_json"},
-      {"tbb/", "TBB::tbb"},
-      {"CGAL/", "CGAL::CGAL"},
-      {"cholmod", "Spira::cholmod"},
-      {"urdf_", "Spira::urdfdom"},
-      {"console_bridge/", "Spira::urdfdom"},
+      {"Eigen/", "Eigen3::Eigen"},   {"nlohmann/", "nlohmann_json::nlohmann_json"},
+      {"tbb/", "TBB::tbb"},          {"CGAL/", "CGAL::CGAL"},
+      {"cholmod", "Spira::cholmod"}, {"pcl/", "Spira::pcl"},
+      {"urdf_", "Spira::urdfdom"},   {"console_bridge/", "Spira::urdfdom"},
       {"tinyxml", "Spira::urdfdom"}};
   for (const auto& [prefix, library] : prefixes)
     if (startsWith(header, prefix)) return library;

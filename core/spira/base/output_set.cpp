@@ -170,6 +170,7 @@ std::vector<Entry> entriesFor(const std::vector<OutputFile>& files, const std::s
 // The thermal files are listed with the programs, under a name no program file can have: like a
 // program they belong to the plan beside them.
 constexpr const char* kThermalSet = "/thermal";
+constexpr const char* kScanSet = "/scan";
 
 // What a new set writes: its kind, its file names and, for a program, the program's name.
 struct NewSet {
@@ -177,6 +178,7 @@ struct NewSet {
       : kind(k),
         program(k == OutputKind::Program   ? programName(files)
                 : k == OutputKind::Thermal ? kThermalSet
+                : k == OutputKind::Scan    ? kScanSet
                                            : std::string())
   {
     for (const OutputFile& f : files) names.insert(f.name);

@@ -14,9 +14,10 @@ struct OutputFile {
   bool thermal = false;
 };
 
-// A plan (trajectory.csv, joints.csv, report.json), a robot program (its .src/.dat/.ls files) or the
-// thermal history of the plan (thermal.json, its CSVs and its ParaView series).
-enum class OutputKind { Plan, Program, Thermal };
+// A plan (trajectory.csv, joints.csv, report.json), a robot program (its .src/.dat/.ls files), the
+// thermal history of the plan (thermal.json, its CSVs and its ParaView series) or a scan's comparison
+// with the part (the aligned scan, deviation.csv, deviation.json).
+enum class OutputKind { Plan, Program, Thermal, Scan };
 
 // The hidden file in an output folder that lists the files of Spira's sets there, with their sizes
 // and checksums.

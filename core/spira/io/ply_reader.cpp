@@ -79,8 +79,13 @@ std::string declaredCounts(const PlyHeader& h)
 
 class PlyParser {
  public:
-  PlyParser(std::string_view bytes, const std::string& source, Progress& progress)
-      : bytes_(bytes), source_(source), progress_(progress), header_(parsePlyHeader(bytes, source))
+  // `points`: a point cloud, whose faces (if any) are read past.
+  PlyParser(std::string_view bytes, const std::string& source, Progress& progress, bool points)
+      : bytes_(bytes),
+        source_(source),
+        progress_(progress),
+        header_(parsePlyHeader(bytes, source)),
+        points_(points)
   {
   }
 
@@ -110,23 +115,24 @@ class PlyParser {
     for (size_t i = 0; i < header_.elements.size(); ++i) {
       const PlyElement& e = header_.elements[i];
       if (e.name == "vertex") vertex_ = static_cast<int>(i);
-      if (e.name == "face") face_ = static_cast<int>(i);
+      if (e.name == "face" && !points_) face_ = static_cast<int>(i);
     }
     if (vertex_ < 0)
       throw InputError("'" + source_ + "' has no 'vertex' element in its PLY header",
-                       "export the part again as a PLY mesh with vertices and faces");
+                       points_ ? "export the scan again as a PLY point cloud with x, y, z vertices"
+                               : "export the part again as a PLY mesh with vertices and faces");
+    if (points_) {
+      findVertexProperties();
+      if (header_.elements[static_cast<size_t>(vertex_)].count == 0)
+        throw InputError("'" + source_ + "' holds no point: its PLY header declares 0 vertices",
+                         "choose the scan's file, or export the scan again");
+      return;
+    }
     if (face_ < 0)
       throw InputError("'" + source_ + "' has no 'face' element in its PLY header: it holds points only",
                        "Spira needs a surface; export the part as a mesh with faces");
+    findVertexProperties();
     const PlyElement& v = header_.elements[static_cast<size_t>(vertex_)];
-    axisOf_.assign(v.properties.size(), -1);
-    for (int axis = 0; axis < 3; ++axis) {
-      const char name[2] = {static_cast<char>('x' + axis), '\0'};
-      const int p = v.find(name);
-      if (p < 0 || v.properties[static_cast<size_t>(p)].isList)
-        headerFail(v, "element 'vertex' has no scalar property '" + std::string(name) + "'");
-      axisOf_[static_cast<size_t>(p)] = axis;
-    }
     const PlyElement& f = header_.elements[static_cast<size_t>(face_)];
     corners_ = f.find("vertex_indices");
     if (corners_ < 0) corners_ = f.find("vertex_index");
@@ -140,6 +146,26 @@ class PlyParser {
                         std::to_string(std::numeric_limits<int>::max()));
   }
 
+  // x, y, z (required) and nx, ny, nz (all three or none) of the vertex element.
+  void findVertexProperties()
+  {
+    const PlyElement& v = header_.elements[static_cast<size_t>(vertex_)];
+    axisOf_.assign(v.properties.size(), -1);
+    normalOf_.assign(v.properties.size(), -1);
+    int normals = 0;
+    for (int axis = 0; axis < 3; ++axis) {
+      const char name[2] = {static_cast<char>('x' + axis), '\0'};
+      const int p = v.find(name);
+      if (p < 0 || v.properties[static_cast<size_t>(p)].isList)
+        headerFail(v, "element 'vertex' has no scalar property '" + std::string(name) + "'");
+      axisOf_[static_cast<size_t>(p)] = axis;
+      const int n = v.find("n" + std::string(name));
+      if (n >= 0 && !v.properties[static_cast<size_t>(n)].isList)
+        normalOf_[static_cast<size_t>(n)] = axis, ++normals;
+    }
+    hasNormals_ = normals == 3;
+  }
+
   // Refuses a header whose counts the body cannot hold before anything is allocated for them.
   void checkSizes()
   {
@@ -150,13 +176,15 @@ class PlyParser {
                            ", which take at least " + std::to_string(needed) + " bytes, but only " +
                            std::to_string(available) + " bytes follow the header",
                        kTruncatedHint);
+    out_.mesh.vertices.resize(static_cast<size_t>(header_.elements[static_cast<size_t>(vertex_)].count));
+    if (hasNormals_) out_.normals.resize(out_.mesh.vertices.size());
+    if (face_ < 0) return;
     const PlyElement& f = header_.elements[static_cast<size_t>(face_)];
     const PlyProperty& list = f.properties[static_cast<size_t>(corners_)];
     // A triangle takes at least 8 ASCII bytes ("3 0 1 2\n"); reserving more than the body can hold
     // would let a lying header allocate memory.
     const std::uint64_t triangleBytes =
         header_.encoding == PlyEncoding::Ascii ? 8 : plyTypeSize(list.countType) + 3 * plyTypeSize(list.type);
-    out_.mesh.vertices.resize(static_cast<size_t>(header_.elements[static_cast<size_t>(vertex_)].count));
     out_.mesh.faces.reserve(static_cast<size_t>(std::min(f.count, available / triangleBytes)));
   }
 
@@ -217,17 +245,20 @@ class PlyParser {
   template <class Cursor>
   void readVertex(Cursor& cursor, const PlyElement& e, size_t k)
   {
-    double xyz[3] = {0.0, 0.0, 0.0};
+    double xyz[3] = {0.0, 0.0, 0.0}, nxyz[3] = {0.0, 0.0, 0.0};
     for (size_t p = 0; p < e.properties.size(); ++p) {
       const PlyProperty& prop = e.properties[p];
       if (axisOf_[p] >= 0)
         xyz[axisOf_[p]] = cursor.real(prop.type);
+      else if (hasNormals_ && normalOf_[p] >= 0)
+        nxyz[normalOf_[p]] = cursor.real(prop.type);
       else if (prop.isList)
         cursor.skipList(listCount(cursor, e, k, prop), prop.type);
       else
         cursor.skip(prop.type);
     }
     out_.mesh.vertices[k] = Vec3(xyz[0], xyz[1], xyz[2]);
+    if (hasNormals_) out_.normals[k] = Vec3(nxyz[0], nxyz[1], nxyz[2]);
   }
 
   template <class Cursor>
@@ -326,7 +357,10 @@ class PlyParser {
   int vertex_ = -1;
   int face_ = -1;
   int corners_ = -1;
-  std::vector<int> axisOf_;  // per vertex property: 0, 1, 2 for x, y, z, else -1
+  bool points_ = false;
+  bool hasNormals_ = false;
+  std::vector<int> axisOf_;    // per vertex property: 0, 1, 2 for x, y, z, else -1
+  std::vector<int> normalOf_;  // per vertex property: 0, 1, 2 for nx, ny, nz, else -1
   std::vector<int> loop_;
   PolygonFan fan_;
 };
@@ -337,13 +371,26 @@ PlyData parsePly(std::string_view bytes, const std::string& source, Progress& pr
 {
   if (bytes.empty())
     throw InputError("'" + source + "' is empty (0 bytes)", "choose the right file or re-export it");
-  return PlyParser(bytes, source, progress).parse();
+  return PlyParser(bytes, source, progress, false).parse();
 }
 
 PlyData readPly(const std::filesystem::path& file, Progress& progress)
 {
   const MappedFile mapped(file);
   return parsePly(mapped.bytes(), file.filename().string(), progress);
+}
+
+PlyData parsePlyPoints(std::string_view bytes, const std::string& source, Progress& progress)
+{
+  if (bytes.empty())
+    throw InputError("'" + source + "' is empty (0 bytes)", "choose the scan's file or export it again");
+  return PlyParser(bytes, source, progress, true).parse();
+}
+
+PlyData readPlyPoints(const std::filesystem::path& file, Progress& progress)
+{
+  const MappedFile mapped(file);
+  return parsePlyPoints(mapped.bytes(), file.filename().string(), progress);
 }
 
 }  // namespace spira

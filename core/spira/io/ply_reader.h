@@ -16,6 +16,8 @@ namespace spira {
 // elements are read past and dropped.
 struct PlyData {
   TriangleMesh mesh;
+  // Per vertex, the vertex element's nx, ny, nz when it has all three (as scanners write them), else empty.
+  std::vector<Vec3> normals;
   PlyEncoding encoding = PlyEncoding::Ascii;
   size_t polygonFaces = 0;     // faces with more than three corners, split into triangles
   size_t degenerateFaces = 0;  // faces with fewer than three corners, dropped
@@ -34,5 +36,10 @@ PlyData parsePly(std::string_view bytes, const std::string& source, Progress& pr
 
 // Maps (or reads) the whole file once and parses it. Throws IoError when it cannot be read.
 PlyData readPly(const std::filesystem::path& file, Progress& progress);
+
+// The same for a point cloud (a scan): the vertices and their normals, any face element read past.
+// A file without a vertex element, or with no vertex in it, is refused.
+PlyData parsePlyPoints(std::string_view bytes, const std::string& source, Progress& progress);
+PlyData readPlyPoints(const std::filesystem::path& file, Progress& progress);
 
 }  // namespace spira

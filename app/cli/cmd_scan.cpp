@@ -1,0 +1,285 @@
+// spira-cli scan-compare: a scan registered to the part and its deviation from it.
+#include <chrono>
+#include <cmath>
+#include <iostream>
+#include <nlohmann/json.hpp>
+
+#include "builtin_plugins.h"
+#include "cli_common.h"
+#include "part_loading.h"
+#include "spira/base/atomic_file.h"
+#include "spira/base/error.h"
+#include "spira/base/number_text.h"
+#include "spira/base/output_set.h"
+#include "spira/base/units.h"
+#include "spira/plugin/param_cli.h"
+#include "spira/scan/scan_alignment.h"
+#include "spira/scan/scan_deviation.h"
+#include "spira/scan/scan_processing.h"
+#include "spira/scan/scan_reader.h"
+#include "spira/scan/scan_simulator.h"
+#include "spira/scan/scan_writer.h"
+
+namespace spira::cli {
+namespace {
+
+constexpr const char* kHelp =
+    "usage: spira-cli scan-compare PART SCAN -o DIR [--no-align] [--voxel MM] [--align-voxel MM]\n"
+    "                              [--max-distance MM] [--outlier-stddev X] [--scan-scale X] [importer "
+    "flags]\n\n"
+    "Reads SCAN (a point cloud: .ply, .pcd, .xyz/.csv/.txt/.asc columns x y z [nx ny nz]; or a mesh), "
+    "removes\n"
+    "its stray points (statistical outlier removal, --outlier-stddev, 0 for none; --voxel thins it to one "
+    "point\n"
+    "per cell first), registers it to PART by point-to-plane ICP from where it lies (--no-align: it was "
+    "taken\n"
+    "in the part's frame), and measures every point's signed distance to the part (positive outside).\n"
+    "Writes DIR/aligned_scan.ply (the scan moved onto the part, with its deviation per point),\n"
+    "DIR/deviation.csv (index,x,y,z,deviation_mm) and DIR/deviation.json (the transform, the residual,\n"
+    "mean, RMS, 95th percentile and a histogram). --align-voxel MM thins the scan for the fit (default 1),\n"
+    "--max-distance MM is the farthest a point may lie from the part to count in the fit (default 1).\n"
+    "A scan far larger or smaller than the part is refused with its likely unit: --scan-scale X multiplies\n"
+    "its coordinates. Exit 3 for a scan that cannot be read, is too small or does not overlap the part.\n";
+
+nlohmann::json transformJson(const Transform& T)
+{
+  nlohmann::json rows = nlohmann::json::array();
+  for (int r = 0; r < 4; ++r) rows.push_back({T(r, 0), T(r, 1), T(r, 2), T(r, 3)});
+  return rows;
+}
+
+nlohmann::json statsJson(const DeviationStats& s)
+{
+  return {{"count", s.count},
+          {"mean_mm", s.mean},
+          {"rms_mm", s.rms},
+          {"p95_mm", s.p95},
+          {"min_mm", s.min},
+          {"max_mm", s.max},
+          {"histogram", {{"min_mm", s.binMin}, {"bin_mm", s.binWidth}, {"counts", s.histogram}}}};
+}
+
+std::string deviationCsv(const PointCloud& scan, const std::vector<double>& deviation)
+{
+  std::string out = "index,x,y,z,deviation_mm\n";
+  out.reserve(out.size() + scan.size() * 64);
+  for (size_t i = 0; i < scan.size(); ++i) {
+    appendNumber(out, static_cast<long long>(i));
+    for (int k = 0; k < 3; ++k) {
+      out += ',';
+      appendNumber(out, scan.points[i][k]);
+    }
+    out += ',';
+    appendNumber(out, deviation[i]);
+    out += '\n';
+  }
+  return out;
+}
+
+double positiveFlag(const std::string& flag, const std::string& text, double fallback, bool zeroAllowed)
+{
+  if (text.empty()) return fallback;
+  const double v = finiteNumberFlag(flag, text, flag + " 0.5");
+  if (v < 0.0 || (!zeroAllowed && v == 0.0))
+    throw UsageError(
+        flag + " " + text + " is " + (zeroAllowed ? "negative" : "not above zero"),
+        "give a number " + std::string(zeroAllowed ? "from 0" : "above 0") + ", e.g. " + flag + " 0.5");
+  return v;
+}
+
+}  // namespace
+
+int cmdScanCompare(const std::vector<std::string>& argv)
+{
+  const PluginRegistry& registry = builtinRegistry();
+  ImporterFlags flags(registry);
+  Args args = splitArgs(argv);
+  if (args.takeSwitch("--help")) {
+    std::cout << kHelp << paramFlagsHelp(flags.targets());
+    return kExitOk;
+  }
+  const std::string outText = args.takeOption("-o");
+  const bool align = !args.takeSwitch("--no-align");
+  ScanFilterSettings filter;
+  filter.voxelMm = positiveFlag("--voxel", args.takeOption("--voxel"), 0.0, true);
+  filter.outlierStddev = positiveFlag("--outlier-stddev", args.takeOption("--outlier-stddev"), 3.0, true);
+  AlignSettings alignment;
+  alignment.voxelMm = positiveFlag("--align-voxel", args.takeOption("--align-voxel"), 1.0, false);
+  alignment.finalDistanceMm = positiveFlag("--max-distance", args.takeOption("--max-distance"), 1.0, false);
+  alignment.startDistanceMm = std::max(10.0, alignment.finalDistanceMm);
+  const double scale = positiveFlag("--scan-scale", args.takeOption("--scan-scale"), 1.0, false);
+  args.rest = takeParamFlags(args.rest, flags.targets());
+  const auto positional = args.finish("scan-compare", 2, 2);
+  if (outText.empty())
+    throw UsageError("scan-compare needs -o DIR", "add -o DIR for the aligned scan and deviation");
+  const std::filesystem::path outDir(outText);
+  ensureWritableDirectory(outDir);
+
+  using Clock = std::chrono::steady_clock;
+  const auto start = Clock::now();
+  const auto since = [](Clock::time_point t) {
+    return std::chrono::duration<double>(Clock::now() - t).count();
+  };
+  NullProgress progress;
+  const ImportedPart part = flags.import(positional[0], progress);
+  auto lap = Clock::now();
+  PointCloud scan = readScan(registry, positional[1], progress);
+  if (scale != 1.0)
+    for (Vec3& p : scan.points) p *= scale;
+  const double readSeconds = since(lap);
+  if (const auto unit = scanUnitHint(boundsOf(scan), part.mesh.bounds()))
+    throw InputError("'" + positional[1] + "': " + *unit,
+                     "give the scale that makes it mm with --scan-scale, or export the scan in mm");
+  lap = Clock::now();
+  ScanFilterReport filtered;
+  scan = filterScan(scan, filter, &filtered);
+  const double filterSeconds = since(lap);
+  lap = Clock::now();
+  AlignResult fit;
+  if (align) {
+    fit = alignScan(scan, part.mesh, Transform::Identity(), alignment, progress);
+    scan = transformed(scan, fit.T_part_scan);
+  }
+  const double alignSeconds = since(lap);
+  lap = Clock::now();
+  const std::vector<double> deviation = scanDeviation(scan, part.mesh, progress);
+  const DeviationStats stats = deviationStats(deviation);
+  const double deviationSeconds = since(lap);
+
+  nlohmann::json j;
+  j["part"] = positional[0];
+  j["scan"] = positional[1];
+  j["points_read"] = filtered.read;
+  j["points_after_voxel"] = filtered.afterVoxel;
+  j["outliers_removed"] = filtered.outliers;
+  j["points"] = scan.size();
+  if (scale != 1.0) j["scan_scale"] = scale;
+  if (align) {
+    const Eigen::AngleAxisd turn(fit.T_part_scan.linear());
+    j["alignment"] = {{"T_part_scan", transformJson(fit.T_part_scan)},
+                      {"translation_mm", fit.T_part_scan.translation().norm()},
+                      {"rotation_deg", radToDeg(turn.angle())},
+                      {"rms_mm", fit.rmsMm},
+                      {"inlier_fraction", fit.inlierFraction},
+                      {"points_used", fit.pointsUsed},
+                      {"converged", fit.converged}};
+  } else {
+    j["alignment"] = nullptr;
+  }
+  j["deviation"] = statsJson(stats);
+  j["timings_s"] = {{"read", readSeconds},
+                    {"filter", filterSeconds},
+                    {"align", alignSeconds},
+                    {"deviation", deviationSeconds},
+                    {"total", since(start)}};
+  replaceOutputSet(outDir, OutputKind::Scan,
+                   {{"aligned_scan.ply", pointCloudPly(scan, &deviation, "deviation")},
+                    {"deviation.csv", deviationCsv(scan, deviation)},
+                    {"deviation.json", j.dump(2) + "\n"}});
+
+  std::cout << "scan " << positional[1] << ": " << filtered.read << " points, " << filtered.outliers
+            << " stray point(s) removed, " << scan.size() << " compared\n";
+  if (align)
+    std::cout << "aligned: moved " << significantText(fit.T_part_scan.translation().norm(), 4) << " mm and "
+              << significantText(radToDeg(Eigen::AngleAxisd(fit.T_part_scan.linear()).angle()), 4)
+              << " deg onto the part; residual " << significantText(fit.rmsMm, 3) << " mm RMS over "
+              << significantText(100.0 * fit.inlierFraction, 4) << " % of the points\n";
+  std::cout << "deviation from the part (mm, + outside): mean " << significantText(stats.mean, 3) << ", RMS "
+            << significantText(stats.rms, 3) << ", 95 % within " << significantText(stats.p95, 3) << ", from "
+            << significantText(stats.min, 3) << " to " << significantText(stats.max, 3) << "\n";
+  std::cout << "wrote " << (outDir / "aligned_scan.ply").string() << ", deviation.csv and deviation.json\n";
+  return kExitOk;
+}
+
+namespace {
+
+constexpr const char* kSimHelp =
+    "usage: spira-cli scan-sim PART -o SCAN.ply|.xyz [--spacing MM] [--noise MM] [--scale X]\n"
+    "                          [--move DX,DY,DZ[,RX,RY,RZ]] [--seed N] [importer flags]\n\n"
+    "Writes a laser-line scan of PART made in code, for trying scan-compare without a scanner: points about\n"
+    "--spacing mm apart on its surface (default 1), gaussian noise of --noise mm along the surface normal\n"
+    "(default 0.05), the part grown by --scale about the centre of its base (default 1), and the whole scan\n"
+    "moved by --move: DX,DY,DZ mm then a turn RX,RY,RZ deg about the part's centre (the scanner's frame off\n"
+    "the part's). The same seed gives the same scan.\n";
+
+// "DX,DY,DZ[,RX,RY,RZ]": mm, then degrees about x, y and z (fixed axes, in that order) about `centre`.
+Transform moveFlag(const std::string& text, const Vec3& centre)
+{
+  std::vector<double> v;
+  size_t at = 0;
+  while (at <= text.size()) {
+    const size_t comma = std::min(text.find(',', at), text.size());
+    v.push_back(finiteNumberFlag("--move", text.substr(at, comma - at), "--move 3,-2,1,0,0,5"));
+    at = comma + 1;
+  }
+  if (v.size() != 3 && v.size() != 6)
+    throw UsageError("--move " + text + " has " + std::to_string(v.size()) + " numbers",
+                     "give DX,DY,DZ in mm, optionally then RX,RY,RZ in degrees, e.g. --move 3,-2,1,0,0,5");
+  Transform T = Transform::Identity();
+  if (v.size() == 6)
+    T.linear() =
+        (Eigen::AngleAxisd(degToRad(v[5]), Vec3::UnitZ()) * Eigen::AngleAxisd(degToRad(v[4]), Vec3::UnitY()) *
+         Eigen::AngleAxisd(degToRad(v[3]), Vec3::UnitX()))
+            .toRotationMatrix();
+  T.translation() = centre - T.linear() * centre + Vec3(v[0], v[1], v[2]);
+  return T;
+}
+
+std::string xyzText(const PointCloud& cloud)
+{
+  std::string out = "x,y,z\n";
+  for (const Vec3& p : cloud.points) {
+    for (int k = 0; k < 3; ++k) {
+      appendNumber(out, p[k]);
+      out += k < 2 ? ',' : '\n';
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+int cmdScanSim(const std::vector<std::string>& argv)
+{
+  const PluginRegistry& registry = builtinRegistry();
+  ImporterFlags flags(registry);
+  Args args = splitArgs(argv);
+  if (args.takeSwitch("--help")) {
+    std::cout << kSimHelp << paramFlagsHelp(flags.targets());
+    return kExitOk;
+  }
+  const std::string outText = args.takeOption("-o");
+  const double spacing = positiveFlag("--spacing", args.takeOption("--spacing"), 1.0, false);
+  ScanErrors errors;
+  errors.noiseMm = positiveFlag("--noise", args.takeOption("--noise"), 0.05, true);
+  errors.scale = positiveFlag("--scale", args.takeOption("--scale"), 1.0, false);
+  const std::string move = args.takeOption("--move");
+  const std::string seedText = args.takeOption("--seed");
+  const long long seed =
+      seedText.empty() ? 1 : wholeNumberFlag("--seed", seedText, 0, 1000000000, "--seed 7");
+  args.rest = takeParamFlags(args.rest, flags.targets());
+  const auto positional = args.finish("scan-sim", 1, 1);
+  if (outText.empty())
+    throw UsageError("scan-sim needs -o SCAN.ply", "add -o and the scan file to write (.ply or .xyz)");
+  const std::filesystem::path out(outText);
+  const std::string ext = out.extension().string();
+  if (ext != ".ply" && ext != ".xyz")
+    throw UsageError("cannot tell the scan format of '" + outText + "' from its extension",
+                     "name the file .ply or .xyz");
+  NullProgress progress;
+  const ImportedPart part = flags.import(positional[0], progress);
+  const BoundingBox box = part.mesh.bounds();
+  errors.scaleCentre = Vec3(box.center().x(), box.center().y(), box.min.z());
+  if (!move.empty()) errors.misalignment = moveFlag(move, box.center());
+  const size_t expected = size_t(part.mesh.area() / (spacing * spacing));
+  if (expected > 20000000)
+    throw InputError("about " + std::to_string(expected) + " points at " + significantText(spacing, 3) +
+                         " mm over this part's " + significantText(part.mesh.area(), 4) + " mm^2",
+                     "give a larger --spacing (at most 20 million points)");
+  const PointCloud scan = simulateSurfaceScan(part.mesh, spacing, errors, std::uint64_t(seed));
+  writeFileAtomically(out, ext == ".ply" ? pointCloudPly(scan) : xyzText(scan));
+  std::cout << "wrote " << outText << ": " << scan.size() << " points of " << positional[0] << "\n";
+  return kExitOk;
+}
+
+}  // namespace spira::cli

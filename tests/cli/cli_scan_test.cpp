@@ -1,0 +1,111 @@
+// spira-cli scan-sim and scan-compare: a simulated scan of a real part, moved and noised, is registered
+// back and measured; scans in other units, far from the part, or missing are refused with exit 3 and
+// nothing written.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "cli_runner.h"
+#include "support/test_support.h"
+
+namespace fs = std::filesystem;
+
+namespace spira::test {
+namespace {
+
+constexpr int kBadInput = 3;
+
+std::string junction()
+{
+  return (sourceDir() / "tests/data/real/junction_waam_mm.stl").string();
+}
+
+nlohmann::json readJson(const fs::path& file)
+{
+  std::ifstream in(file);
+  return nlohmann::json::parse(in);
+}
+
+size_t lines(const fs::path& file)
+{
+  std::ifstream in(file);
+  size_t n = 0;
+  for (std::string line; std::getline(in, line);) ++n;
+  return n;
+}
+
+TEST(CliScan, ASimulatedScanIsAlignedAndMeasured)
+{
+  TempDir dir;
+  const CliRun sim = runCli({"scan-sim", junction(), "-o", (dir / "scan.ply").string(), "--spacing", "1",
+                             "--noise", "0.05", "--move", "3,-2,1,1,-1,2", "--seed", "5"});
+  ASSERT_EQ(sim.exitCode, 0) << sim.err;
+  const CliRun r =
+      runCli({"scan-compare", junction(), (dir / "scan.ply").string(), "-o", (dir / "cmp").string()});
+  ASSERT_EQ(r.exitCode, 0) << r.err << r.out;
+  const nlohmann::json j = readJson(dir / "cmp" / "deviation.json");
+  // Moved by 3,-2,1 mm and turned by (1, -1, 2) deg about the part's centre: the fit turns it back by
+  // the same angle, sqrt(1 + 1 + 4) deg for such small turns to within 0.01 deg.
+  EXPECT_NEAR(j["alignment"]["rotation_deg"].get<double>(), std::sqrt(6.0), 0.01);
+  EXPECT_LT(j["alignment"]["rms_mm"].get<double>(), 0.05);
+  EXPECT_GT(j["alignment"]["inlier_fraction"].get<double>(), 0.99);
+  // Aligned, the scan lies on the part within its noise.
+  EXPECT_NEAR(j["deviation"]["mean_mm"].get<double>(), 0.0, 0.005);
+  EXPECT_NEAR(j["deviation"]["rms_mm"].get<double>(), 0.05, 0.005);
+  const size_t points = j["points"].get<size_t>();
+  EXPECT_GT(points, 90000u);
+  EXPECT_EQ(lines(dir / "cmp" / "deviation.csv"), points + 1);
+  EXPECT_TRUE(fs::exists(dir / "cmp" / "aligned_scan.ply"));
+  EXPECT_NE(r.out.find("deviation from the part"), std::string::npos) << r.out;
+
+  // The scan taken in the part's frame is measured where it lies: 3 mm off in places.
+  const CliRun raw = runCli(
+      {"scan-compare", junction(), (dir / "scan.ply").string(), "-o", (dir / "raw").string(), "--no-align"});
+  ASSERT_EQ(raw.exitCode, 0) << raw.err;
+  EXPECT_GT(readJson(dir / "raw" / "deviation.json")["deviation"]["rms_mm"].get<double>(), 1.0);
+}
+
+TEST(CliScan, BadScansAreRefusedWithTheChangeThatWorks)
+{
+  TempDir dir;
+  // Written in inches: 25.4 times too small in mm.
+  ASSERT_EQ(runCli({"scan-sim", junction(), "-o", (dir / "inch.xyz").string(), "--spacing", "2", "--scale",
+                    std::to_string(1.0 / 25.4)})
+                .exitCode,
+            0);
+  const CliRun inch =
+      runCli({"scan-compare", junction(), (dir / "inch.xyz").string(), "-o", (dir / "a").string()});
+  EXPECT_EQ(inch.exitCode, kBadInput) << inch.out;
+  EXPECT_NE(inch.err.find("likely in inches"), std::string::npos) << inch.err;
+  EXPECT_NE(inch.err.find("--scan-scale"), std::string::npos) << inch.err;
+  EXPECT_FALSE(fs::exists(dir / "a" / "deviation.json"));
+
+  ASSERT_EQ(runCli({"scan-sim", junction(), "-o", (dir / "far.ply").string(), "--spacing", "2", "--move",
+                    "400,0,0"})
+                .exitCode,
+            0);
+  const CliRun far =
+      runCli({"scan-compare", junction(), (dir / "far.ply").string(), "-o", (dir / "b").string()});
+  EXPECT_EQ(far.exitCode, kBadInput) << far.out;
+  EXPECT_NE(far.err.find("does not overlap the part"), std::string::npos) << far.err;
+  EXPECT_FALSE(fs::exists(dir / "b" / "deviation.json"));
+
+  const CliRun missing =
+      runCli({"scan-compare", junction(), (dir / "none.ply").string(), "-o", (dir / "c").string()});
+  EXPECT_EQ(missing.exitCode, kBadInput) << missing.out;
+  EXPECT_NE(missing.err.find("none.ply"), std::string::npos) << missing.err;
+
+  std::ofstream(dir / "bad.xyz") << "1 2 3\n4 x 6\n";
+  const CliRun bad =
+      runCli({"scan-compare", junction(), (dir / "bad.xyz").string(), "-o", (dir / "d").string()});
+  EXPECT_EQ(bad.exitCode, kBadInput);
+  EXPECT_NE(bad.err.find("'bad.xyz' line 2: 'x' is not a number"), std::string::npos) << bad.err;
+
+  EXPECT_EQ(runCli({"scan-compare", junction(), (dir / "far.ply").string()}).exitCode, 2);  // no -o
+  EXPECT_EQ(runCli({"scan-sim", junction(), "-o", (dir / "s.ply").string(), "--move", "1,2"}).exitCode, 2);
+}
+
+}  // namespace
+}  // namespace spira::test
