@@ -71,5 +71,9 @@ int cmdCompare(const std::vector<std::string>& args);
 int cmdThermal(const std::vector<std::string>& args);
 int cmdScanCompare(const std::vector<std::string>& args);
 int cmdScanSim(const std::vector<std::string>& args);
+int cmdResume(const std::vector<std::string>& args);
+// scan-sim PLAN_DIR: the wall of a plan built part way (--at, --error), scanned; `args` holds the rest.
+int simulatePlanScan(Args& args, const std::string& planDir, const std::filesystem::path& out, double noiseMm,
+                     long long seed);
 
 }  // namespace spira::cli

@@ -195,12 +195,19 @@ namespace {
 
 constexpr const char* kSimHelp =
     "usage: spira-cli scan-sim PART -o SCAN.ply|.xyz [--spacing MM] [--noise MM] [--scale X]\n"
-    "                          [--move DX,DY,DZ[,RX,RY,RZ]] [--seed N] [importer flags]\n\n"
+    "                          [--move DX,DY,DZ[,RX,RY,RZ]] [--seed N] [importer flags]\n"
+    "       spira-cli scan-sim PLAN_DIR --at INDEX --error KIND:PERCENT[@UNTIL%][,SIDE] -o SCAN.ply\n"
+    "                          [--noise MM] [--bead-width MM] [--seed N]\n\n"
     "Writes a laser-line scan of PART made in code, for trying scan-compare without a scanner: points about\n"
     "--spacing mm apart on its surface (default 1), gaussian noise of --noise mm along the surface normal\n"
     "(default 0.05), the part grown by --scale about the centre of its base (default 1), and the whole scan\n"
     "moved by --move: DX,DY,DZ mm then a turn RX,RY,RZ deg about the part's centre (the scanner's frame off\n"
-    "the part's). The same seed gives the same scan.\n";
+    "the part's). The same seed gives the same scan.\n"
+    "With a plan folder: the wall of the plan as built to point INDEX, each bead's height off the plan by\n"
+    "--error (uniform:-8% everywhere, or sag:-8%,-y on the side facing -y; @30% only over the first 30 % of\n"
+    "the plan's points), scanned over its last three revolutions: the crown of each bead and both faces of "
+    "the\n"
+    "wall, in the part's frame. 'spira-cli resume' re-plans the rest from it.\n";
 
 // "DX,DY,DZ[,RX,RY,RZ]": mm, then degrees about x, y and z (fixed axes, in that order) about `centre`.
 Transform moveFlag(const std::string& text, const Vec3& centre)
@@ -257,8 +264,6 @@ int cmdScanSim(const std::vector<std::string>& argv)
   const std::string seedText = args.takeOption("--seed");
   const long long seed =
       seedText.empty() ? 1 : wholeNumberFlag("--seed", seedText, 0, 1000000000, "--seed 7");
-  args.rest = takeParamFlags(args.rest, flags.targets());
-  const auto positional = args.finish("scan-sim", 1, 1);
   if (outText.empty())
     throw UsageError("scan-sim needs -o SCAN.ply", "add -o and the scan file to write (.ply or .xyz)");
   const std::filesystem::path out(outText);
@@ -266,6 +271,16 @@ int cmdScanSim(const std::vector<std::string>& argv)
   if (ext != ".ply" && ext != ".xyz")
     throw UsageError("cannot tell the scan format of '" + outText + "' from its extension",
                      "name the file .ply or .xyz");
+  if (!args.rest.empty() && std::filesystem::is_directory(args.rest.front())) {
+    if (ext != ".ply") throw UsageError("a plan's simulated scan is written as PLY", "name the file .ply");
+    if (!move.empty() || errors.scale != 1.0)
+      throw UsageError("--move and --scale are for a part's scan",
+                       "give a plan's scan --at and --error instead");
+    const std::string planDir = args.rest.front();
+    return simulatePlanScan(args, planDir, out, errors.noiseMm, seed);
+  }
+  args.rest = takeParamFlags(args.rest, flags.targets());
+  const auto positional = args.finish("scan-sim", 1, 1);
   NullProgress progress;
   const ImportedPart part = flags.import(positional[0], progress);
   const BoundingBox box = part.mesh.bounds();

@@ -25,7 +25,8 @@ constexpr const char* kUsageText =
     "  kin CELL --fk J1..J6 | --ik X Y Z A B C   forward / inverse kinematics of a cell's robot\n"
     "  export PLAN_DIR --format krl|fanuc_tp -o DIR   robot program of a plan\n"
     "  scan-compare PART SCAN -o DIR   a scan aligned to the part and its deviation map\n"
-    "  scan-sim PART -o SCAN.ply   a simulated scan of a part (noise, growth, misalignment)\n"
+    "  scan-sim PART|PLAN_DIR -o SCAN.ply   a simulated scan of a part, or of a plan built part way\n"
+    "  resume PLAN_DIR --scan SCAN --at INDEX -o DIR   the rest of a build re-planned from a scan\n"
     "  sample NAME -o FILE   write a bundled sample part (open-cylinder, dome, cone) made in code\n"
     "\n"
     "options: --help (also after a command), --version, --threads N (at most N threads; also the\n"
@@ -47,6 +48,7 @@ int dispatch(const std::string& command, const std::vector<std::string>& rest)
   if (command == "thermal") return cmdThermal(rest);
   if (command == "scan-compare") return cmdScanCompare(rest);
   if (command == "scan-sim") return cmdScanSim(rest);
+  if (command == "resume") return cmdResume(rest);
   throw UsageError("unknown command '" + command + "'", "run 'spira-cli --help' for the list of commands");
 }
 

@@ -1,0 +1,231 @@
+// spira-cli resume: the rest of a build re-planned from a scan of the wall as it stands; and the
+// simulated scan of a plan built part way with a deposit error (scan-sim PLAN_DIR).
+#include <cmath>
+#include <filesystem>
+#include <iostream>
+#include <nlohmann/json.hpp>
+
+#include "builtin_plugins.h"
+#include "cli_common.h"
+#include "spira/base/atomic_file.h"
+#include "spira/base/error.h"
+#include "spira/base/number_text.h"
+#include "spira/base/output_set.h"
+#include "spira/document/plan_report.h"
+#include "spira/planning/plan_files.h"
+#include "spira/planning/trajectory_csv_reader.h"
+#include "spira/scan/scan_reader.h"
+#include "spira/scan/scan_resume.h"
+#include "spira/scan/scan_writer.h"
+
+namespace fs = std::filesystem;
+
+namespace spira::cli {
+namespace {
+
+constexpr const char* kResumeHelp =
+    "usage: spira-cli resume PLAN_DIR --scan SCAN --at INDEX -o DIR [--bead-width MM]\n\n"
+    "Re-plans the rest of the build of PLAN_DIR (written by 'spira-cli plan') from a scan of the wall as it\n"
+    "stands after INDEX points were deposited. The scan (in the part's frame: align one taken elsewhere "
+    "with\n"
+    "scan-compare first) gives the top of the last bead on each generatrix; what it lacks of the plan (or "
+    "has\n"
+    "too much) is made up by laying the next revolutions thicker (or thinner) inside the plan's window, "
+    "over\n"
+    "the fewest revolutions that allows, the torch following the wall as it stands. Writes "
+    "DIR/trajectory.csv\n"
+    "(the points from INDEX on: the arc restarts at the first) and DIR/report.json (the measured edge, the\n"
+    "revolutions taken, the deposits, whether the planned top is reached). Exit 4 when the window cannot "
+    "make\n"
+    "the difference up (the report says by how much and where), 3 for a scan or index that does not fit.\n";
+
+struct Plan {
+  Trajectory trajectory;
+  PlanReportSummary report;
+};
+
+Plan readPlanFolder(const fs::path& dir)
+{
+  if (!fs::is_directory(dir))
+    throw InputError("'" + dir.string() + "' is not a plan folder", "give the -o folder of 'spira-cli plan'");
+  verifyOutputSet(dir);
+  Plan p;
+  p.trajectory = readTrajectoryCsv(dir / "trajectory.csv");
+  const fs::path report = dir / "report.json";
+  if (fs::exists(report))
+    p.report = summarisePlanReport(parsePlanReport(readFile(report), report.string()), report.string());
+  return p;
+}
+
+size_t atFlag(const std::string& text, const Trajectory& plan)
+{
+  if (text.empty())
+    throw UsageError("--at INDEX is missing", "give the number of points deposited, e.g. --at 5000");
+  const long long at = wholeNumberFlag("--at", text, 0, 1000000000000LL, "--at 5000");
+  if (at < 1 || size_t(at) > plan.size())
+    throw InputError("--at " + text + " is outside the plan's " + std::to_string(plan.size()) + " points",
+                     "give the number of points deposited, from 1 to " + std::to_string(plan.size()));
+  return size_t(at);
+}
+
+// The plan's process, as its channels show it: one wire feed throughout (synergic) or one travel speed.
+ProcessSettings processOf(const Trajectory& plan, double beadWidth)
+{
+  ProcessSettings s;
+  s.beadWidth = beadWidth;
+  double wfsMin = 1e300, wfsMax = 0.0, tsMin = 1e300, tsMax = 0.0;
+  for (const TrajectoryPoint& p : plan.points) {
+    if (!p.arcOn) continue;
+    wfsMin = std::min(wfsMin, p.wireFeed), wfsMax = std::max(wfsMax, p.wireFeed);
+    tsMin = std::min(tsMin, p.travelSpeed), tsMax = std::max(tsMax, p.travelSpeed);
+  }
+  if (wfsMax > 0.0 && wfsMax - wfsMin <= 1e-9 * wfsMax) {
+    s.mode = ProcessMode::Synergic;
+    s.wireFeed = wfsMax;
+  } else if (tsMax > 0.0) {
+    s.mode = ProcessMode::ConstantTravelSpeed;
+    s.travelSpeed = tsMax;
+  }
+  return s;
+}
+
+double beadWidthFlag(const std::string& text)
+{
+  if (text.empty()) return kDefaultBeadWidth;
+  const double w = finiteNumberFlag("--bead-width", text, "--bead-width 5.2");
+  if (!(w > 0.0))
+    throw UsageError("--bead-width " + text + " is not above zero", "give the wall's width in mm");
+  return w;
+}
+
+// "uniform:-8%", "sag:-8%@30%,-y": the relative error, until which share of the plan, and for a sag the
+// side (x, -x, y, -y).
+DepositErrors errorFlag(const std::string& text)
+{
+  const std::string example = "--error uniform:-8%@30% or --error sag:-8%@30%,-y";
+  const size_t colon = text.find(':');
+  if (text.empty() || colon == std::string::npos)
+    throw UsageError("--error '" + text + "' names no error", "give " + example);
+  DepositErrors e;
+  const std::string kind = text.substr(0, colon);
+  if (kind == "sag")
+    e.kind = DepositErrors::Kind::Sag;
+  else if (kind != "uniform")
+    throw UsageError("--error kind '" + kind + "' is not uniform or sag", "give " + example);
+  std::string rest = text.substr(colon + 1);
+  const size_t comma = rest.find(',');
+  if (comma != std::string::npos) {
+    const std::string side = rest.substr(comma + 1);
+    rest = rest.substr(0, comma);
+    if (side == "x")
+      e.side = Vec3::UnitX();
+    else if (side == "-x")
+      e.side = -Vec3::UnitX();
+    else if (side == "y")
+      e.side = Vec3::UnitY();
+    else if (side == "-y")
+      e.side = -Vec3::UnitY();
+    else
+      throw UsageError("--error side '" + side + "' is not x, -x, y or -y", "give " + example);
+  }
+  const auto percent = [&](std::string p) {
+    if (p.empty() || p.back() != '%')
+      throw UsageError("--error '" + text + "': '" + p + "' is not a percentage", "give " + example);
+    p.pop_back();
+    return finiteNumberFlag("--error", p, example) / 100.0;
+  };
+  const size_t atSign = rest.find('@');
+  e.relative = percent(rest.substr(0, atSign));
+  if (atSign != std::string::npos) e.until = percent(rest.substr(atSign + 1));
+  if (e.relative <= -1.0 || e.until <= 0.0 || e.until > 1.0)
+    throw UsageError("--error '" + text + "' is out of range",
+                     "give an error above -100 % until 1 to 100 % of the plan");
+  return e;
+}
+
+}  // namespace
+
+int simulatePlanScan(Args& args, const std::string& planDir, const fs::path& out, double noiseMm,
+                     long long seed)
+{
+  const Plan plan = readPlanFolder(planDir);
+  const size_t at = atFlag(args.takeOption("--at"), plan.trajectory);
+  const DepositErrors errors = errorFlag(args.takeOption("--error"));
+  const double beadWidth = beadWidthFlag(args.takeOption("--bead-width"));
+  args.finish("scan-sim", 1, 1);
+  const std::vector<double> shortfall = builtShortfall(plan.trajectory, at, errors);
+  const PointCloud scan = scanOfBuild(plan.trajectory, at, shortfall, beadWidth, 3, 2.0 * beadWidth, noiseMm,
+                                      std::uint64_t(seed));
+  writeFileAtomically(out, pointCloudPly(scan));
+  double deepest = 0.0;
+  for (double s : shortfall) deepest = std::max(deepest, s);
+  std::cout << "wrote " << out.string() << ": " << scan.size() << " points of the wall built to point " << at
+            << ", its top up to " << significantText(deepest, 3) << " mm below the plan\n";
+  return kExitOk;
+}
+
+int cmdResume(const std::vector<std::string>& argv)
+{
+  Args args = splitArgs(argv);
+  if (args.takeSwitch("--help")) {
+    std::cout << kResumeHelp;
+    return kExitOk;
+  }
+  const std::string scanFile = args.takeOption("--scan");
+  const std::string atText = args.takeOption("--at");
+  const std::string outText = args.takeOption("-o");
+  const double beadWidth = beadWidthFlag(args.takeOption("--bead-width"));
+  const auto positional = args.finish("resume", 1, 1);
+  if (scanFile.empty())
+    throw UsageError("resume needs --scan SCAN", "give the scan of the wall as it stands");
+  if (outText.empty()) throw UsageError("resume needs -o DIR", "add -o DIR for the continuation");
+  const fs::path outDir(outText);
+  ensureWritableDirectory(outDir);
+  const Plan plan = readPlanFolder(positional[0]);
+  const size_t at = atFlag(atText, plan.trajectory);
+  if (at >= plan.trajectory.size())
+    throw InputError("--at " + atText + ": the plan has " + std::to_string(plan.trajectory.size()) +
+                         " points, all deposited; nothing is left to resume",
+                     "give fewer points than the plan has");
+  if (!plan.report.window)
+    throw InputError("'" + positional[0] + "/report.json' holds no process window (h_min, h_max)",
+                     "plan the part again with 'spira-cli plan'");
+  NullProgress progress;
+  const PointCloud scan = readScan(builtinRegistry(), scanFile, progress);
+  const MeasuredEdge edge = measureTopEdge(plan.trajectory, at, scan, beadWidth);
+  ResumeSettings settings;
+  settings.hMin = plan.report.window->hMin;
+  settings.hMax = plan.report.window->hMax;
+  settings.process = processOf(plan.trajectory, beadWidth);
+  const Resumed resumed = resumeFromEdge(plan.trajectory, at, edge, settings);
+  const ResumeReport& r = resumed.report;
+
+  nlohmann::json j;
+  j["resumed_from"] = fs::absolute(positional[0]).lexically_normal().string();
+  j["scan"] = scanFile;
+  j["at"] = at;
+  j["n_points"] = resumed.continuation.size();
+  j["h_min"] = settings.hMin;
+  j["h_max"] = settings.hMax;
+  j["edge"] = {{"points", r.edgePoints},
+               {"unmeasured", r.unmeasured},
+               {"shortfall_min_mm", r.shortfallMin},
+               {"shortfall_max_mm", r.shortfallMax},
+               {"shortfall_mean_mm", r.shortfallMean}};
+  j["revolutions_to_make_up"] = r.revolutionsMax;
+  j["height_min"] = r.heightMin;
+  j["height_max"] = r.heightMax;
+  j["reaches_top"] = r.reachesTop();
+  j["leftover_mm"] = r.leftoverMax;
+  if (!r.reachesTop()) j["leftover_point"] = r.leftoverPoint;
+  j["summary"] = r.summary();
+  replaceOutputSet(
+      outDir, OutputKind::Plan,
+      {{"trajectory.csv", trajectoryCsv(resumed.continuation)}, {"report.json", j.dump(2) + "\n"}});
+  std::cout << "resume from point " << at << ": " << r.summary() << "\n";
+  std::cout << "wrote " << (outDir / "trajectory.csv").string() << " (" << resumed.continuation.size()
+            << " points, the arc restarting at the first) and report.json\n";
+  return r.reachesTop() ? kExitOk : kExitInfeasible;
+}
+
+}  // namespace spira::cli
