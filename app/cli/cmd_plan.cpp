@@ -137,9 +137,17 @@ int cmdPlan(const std::vector<std::string>& argv)
   const std::string outDir = args.takeOption("-o");
   partFlags.take(args);
   partFlags.substrate = args.takeOption("--substrate");
+  const std::string substrateScan = args.takeOption("--substrate-scan");
+  if (!substrateScan.empty()) {
+    if (!partFlags.substrate.empty())
+      throw UsageError("--substrate and --substrate-scan both name the surface to build on",
+                       "give one of them");
+    partFlags.substrate = kScanPrefix + substrateScan;
+  }
   if (!partFlags.substrate.empty() && partFlags.placement.drop)
     throw UsageError(
-        "--drop moves the part onto the plate, and --substrate builds it on another surface",
+        "--drop moves the part onto the plate, and --substrate (or --substrate-scan) builds it on another "
+        "surface",
         "leave out --drop: with --substrate the part's base edge must already lie on the substrate");
   const bool timing = args.takeSwitch("--timing");
   const bool keepCollisions = args.takeSwitch("--keep-collisions");

@@ -5,8 +5,12 @@
 #include <sstream>
 #include <vector>
 
+#include "builtin_plugins.h"
 #include "cli_common.h"
 #include "spira/mesh/mesh_primitives.h"
+#include "spira/scan/scan_processing.h"
+#include "spira/scan/scan_reader.h"
+#include "spira/scan/scan_surface.h"
 
 namespace spira::cli {
 namespace {
@@ -46,6 +50,12 @@ Substrate substrateFromFlag(const std::string& value, ImporterFlags& importer, P
 {
   const std::string prefix = "cylinder:";
   if (value.rfind(prefix, 0) == 0) return cylinder(value.substr(prefix.size()));
+  if (value.rfind(kScanPrefix, 0) == 0) {
+    const std::string file = value.substr(std::string(kScanPrefix).size());
+    const PointCloud scan = filterScan(readScan(builtinRegistry(), file, progress), ScanFilterSettings{});
+    auto mesh = std::make_shared<const TriangleMesh>(heightFieldFromScan(scan, heightFieldCell(scan)));
+    return Substrate::fromMesh(std::move(mesh), "scan " + std::filesystem::path(file).stem().string(), file);
+  }
   ImportedPart imported = importer.import(value, progress);
   auto mesh = std::make_shared<const TriangleMesh>(std::move(imported.mesh));
   return Substrate::fromMesh(std::move(mesh), std::filesystem::path(value).stem().string(), value);

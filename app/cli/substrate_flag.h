@@ -14,11 +14,19 @@ namespace spira::cli {
 // LENGTH mm long (default 8 RADIUS) centred on it. Throws UsageError for a malformed cylinder.
 Substrate substrateFromFlag(const std::string& value, ImporterFlags& importer, Progress& progress);
 
+// --substrate-scan SCAN is passed on as this prefix and the scan's path: a scanned plate, read as a
+// height field (scan_surface.h) after its stray points are removed.
+inline constexpr const char* kScanPrefix = "scan:";
+
 // The flag's line in the usage texts.
 inline constexpr const char* kSubstrateFlagHelp =
     "  --substrate FILE|cylinder:R[,AXIS[,LENGTH]]\n"
     "                     build on a surface, not the plate: a mesh (a pipe, a curved plate, a previous\n"
     "                     part) or a cylinder of radius R mm about the x, y (default) or z axis through the\n"
-    "                     origin; the part's base edge must lie on it, in the part file's coordinates\n";
+    "                     origin; the part's base edge must lie on it, in the part file's coordinates\n"
+    "  --substrate-scan SCAN\n"
+    "                     build on a scanned plate (a point cloud of its top surface, docs/scans.md): the "
+    "first\n"
+    "                     beads are measured down to the surface the scan describes\n";
 
 }  // namespace spira::cli

@@ -32,10 +32,16 @@ double rayBox(const Vec3& o, const Vec3& invD, const BoundingBox& box, double ma
 {
   double lo = 0.0, hi = maxT;
   for (int k = 0; k < 3; ++k) {
+    // A ray parallel to the slab (a zero component, of either sign) meets the box only from within
+    // the slab, faces included; the products below would be 0 * inf there.
+    if (!std::isfinite(invD[k])) {
+      if (o[k] < box.min[k] || o[k] > box.max[k]) return std::numeric_limits<double>::infinity();
+      continue;
+    }
     double t0 = (box.min[k] - o[k]) * invD[k];
     double t1 = (box.max[k] - o[k]) * invD[k];
     if (t0 > t1) std::swap(t0, t1);
-    lo = std::max(lo, t0);  // NaN (0 * inf on a slab face) leaves the bound as it was
+    lo = std::max(lo, t0);
     hi = std::min(hi, t1);
     if (lo > hi) return std::numeric_limits<double>::infinity();
   }

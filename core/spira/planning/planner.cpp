@@ -108,6 +108,29 @@ void extendToSubstrate(Generatrices& g, double substrateZ)
   }
 }
 
+// The same on a substrate mesh (a scanned warped plate, a pipe): each generatrix starts where it meets
+// the surface, straight on from its first segment: moved down onto it from just above, or up onto it
+// where the base edge dips under it (a nominal flat base on a bowed plate). A start within 0.01 mm
+// of the surface, or a surface not met within `reach` mm, leaves the generatrix as it is.
+void extendToSubstrateMesh(Generatrices& g, const SubstrateSurface& substrate, double reach)
+{
+  for (size_t k = 0; k < g.lines.size(); ++k) {
+    Polyline& line = g.lines[k];
+    if (line.size() < 2) continue;
+    const Vec3 up = (line[1] - line[0]).normalized();
+    const double depth = substrate.depthBelow(line[0], up, reach, reach);
+    if (!std::isfinite(depth) || std::abs(depth) < 0.01 || std::abs(depth) > reach) continue;
+    const Vec3 start = line[0] - depth * up;
+    if (depth > 0.0) {
+      line.insert(line.begin(), start);
+      if (k < g.normals.size() && !g.normals[k].empty())
+        g.normals[k].insert(g.normals[k].begin(), g.normals[k][0]);
+    } else if (-depth < 0.5 * (line[1] - line[0]).norm()) {
+      line[0] = start;
+    }
+  }
+}
+
 bool onSubstrateMesh(const PlanRequest& request)
 {
   return request.substrate && !request.substrate->isPlane();
@@ -152,6 +175,8 @@ void finishMonoBranch(const PluginRegistry& registry, const PlanRequest& request
       extendBelowBase(out.generatrices, request.baseSupportGap);
     else if (!onSubstrateMesh(request))
       extendToSubstrate(out.generatrices, request.substrateZ);
+    else
+      extendToSubstrateMesh(out.generatrices, *request.substrate, settings.spiral.hMax);
     clock.lap("decomposition");
     SubProgress sp(progress, 0.8, 0.95, "spiral");
     out.spiral = buildSpiral(out.generatrices, settings.spiral, sp);
