@@ -227,6 +227,13 @@ TEST(CliTube, ABendOnThePositionerCellIsBuiltUpright)
   EXPECT_EQ(level.exitCode, 4) << level.err << level.out;
   EXPECT_NE(level.out.find("E2"), std::string::npos) << level.out;
   EXPECT_LE(leanOnThePositioner(dir / "level", cell).first, 1.0 + 1e-6);
+  // A slower process (2 mm/s) leaves the rotation time to follow: the TP program is written.
+  args[3] = (dir / "slow").string();
+  args.insert(args.end(), {"--wfs", "1.6"});
+  const CliRun slow = runCli(args);
+  ASSERT_EQ(slow.exitCode, 0) << slow.err << slow.out;
+  EXPECT_TRUE(fs::exists(dir / "slow" / "SPIRA_PART.ls"));
+  EXPECT_LE(leanOnThePositioner(dir / "slow", cell).first, 1.0 + 1e-6);
   std::printf("bend on the positioner: build direction within %.3f deg of vertical, tilt up to %.1f deg\n",
               lean, tilt);
 }

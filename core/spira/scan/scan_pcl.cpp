@@ -169,8 +169,8 @@ AlignResult alignScan(const PointCloud& scan, const TriangleMesh& part, const Tr
   out.pointsUsed = source->size();
   Eigen::Matrix4d total = Eigen::Matrix4d::Identity();
   // PCL prints why a fit stops ("not enough correspondences") on stderr; the overlap check below says
-  // it to the user with what to do, so PCL's own console output is kept for its errors only.
-  pcl::console::setVerbosityLevel(pcl::console::L_ERROR);
+  // it to the user with what to do; PCL's own console lines would only repeat it half-explained.
+  pcl::console::setVerbosityLevel(pcl::console::L_ALWAYS);
   Icp icp;
   icp.setInputTarget(target);
   // A step of 1e-5 mm (squared: 1e-10) or less ends a stage: far below any scanner's resolution.

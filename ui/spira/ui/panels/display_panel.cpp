@@ -19,6 +19,7 @@
 #include "spira/ui/charts/process_chart.h"
 #include "spira/ui/views/field_layer.h"
 #include "spira/ui/views/path_layers.h"
+#include "spira/ui/views/scan_layer.h"
 #include "spira/ui/views/scene_view.h"
 #include "spira/ui/views/spiral_layer.h"
 #include "spira/ui/views/thermal_layer.h"
@@ -100,12 +101,16 @@ QGroupBox* DisplayPanel::buildPathsBox(QWidget* body)
   closure_ = new QCheckBox(tr("Closure point"), pathsBox);
   closure_->setChecked(true);
   closure_->setToolTip(tr("Closed parts: where the spiral ends"));
+  scan_ = new QCheckBox(tr("Compared scan"), pathsBox);
+  scan_->setChecked(true);
+  scan_->setToolTip(tr("File > Compare Scan: the scan on the part, coloured by its deviation from it"));
   guide_ = new QCheckBox(tr("Guide curve"), pathsBox);
   guide_->setChecked(true);
   guide_->setToolTip(tr("Tubes (constant distance): the centre line the layers are laid about"));
   pathsLayout->addWidget(generatrices_);
   pathsLayout->addWidget(guide_);
   pathsLayout->addWidget(closure_);
+  pathsLayout->addWidget(scan_);
   return pathsBox;
 }
 
@@ -191,6 +196,10 @@ void DisplayPanel::connectControls()
   connect(generatrices_, &QCheckBox::toggled, this, &DisplayPanel::setGeneratricesVisible);
   connect(closure_, &QCheckBox::toggled, this, [this](bool on) {
     view_->pathLayers().setClosureVisible(on);
+    render();
+  });
+  connect(scan_, &QCheckBox::toggled, this, [this](bool on) {
+    view_->scanLayer().setVisible(on);
     render();
   });
   connect(guide_, &QCheckBox::toggled, this, [this](bool on) {

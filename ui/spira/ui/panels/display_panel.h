@@ -84,6 +84,7 @@ class DisplayPanel : public QDockWidget {
   QCheckBox* generatrices_ = nullptr;
   QCheckBox* closure_ = nullptr;
   QCheckBox* guide_ = nullptr;
+  QCheckBox* scan_ = nullptr;
   QGroupBox* spiralBox_ = nullptr;
   QCheckBox* spiral_ = nullptr;
   QComboBox* channel_ = nullptr;

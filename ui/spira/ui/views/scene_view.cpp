@@ -33,6 +33,7 @@
 #include "spira/ui/views/field_layer.h"
 #include "spira/ui/views/interaction_style.h"
 #include "spira/ui/views/path_layers.h"
+#include "spira/ui/views/scan_layer.h"
 #include "spira/ui/views/spiral_layer.h"
 #include "spira/ui/views/substrate_grid.h"
 #include "spira/ui/views/thermal_layer.h"
@@ -87,6 +88,7 @@ struct SceneView::Scene {
   std::unique_ptr<PathLayers> paths;
   std::unique_ptr<SpiralLayer> spiral;
   std::unique_ptr<ThermalLayer> thermal;
+  std::unique_ptr<ScanLayer> scan;
 };
 
 SceneView::SceneView(QWidget* parent) : QWidget(parent), scene_(std::make_unique<Scene>())
@@ -197,6 +199,7 @@ SceneView::SceneView(QWidget* parent) : QWidget(parent), scene_(std::make_unique
   s.paths = std::make_unique<PathLayers>(s.renderer);
   s.spiral = std::make_unique<SpiralLayer>(s.renderer);
   s.thermal = std::make_unique<ThermalLayer>(s.renderer);
+  s.scan = std::make_unique<ScanLayer>(s.renderer);
   setCameraPreset(CameraPreset::Iso);
 }
 
@@ -230,6 +233,11 @@ PathLayers& SceneView::pathLayers()
 SpiralLayer& SceneView::spiralLayer()
 {
   return *scene_->spiral;
+}
+
+ScanLayer& SceneView::scanLayer()
+{
+  return *scene_->scan;
 }
 
 ThermalLayer& SceneView::thermalLayer()

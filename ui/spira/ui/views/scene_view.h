@@ -25,6 +25,7 @@ class FieldLayer;
 class PathLayers;
 class SpiralLayer;
 class ThermalLayer;
+class ScanLayer;
 
 enum class CameraPreset { Iso, Front, Top, Side };
 
@@ -67,6 +68,7 @@ class SceneView : public QWidget {
   PathLayers& pathLayers();
   SpiralLayer& spiralLayer();
   ThermalLayer& thermalLayer();
+  ScanLayer& scanLayer();
   void setPartStyle(PartStyle style);
   PartStyle partStyle() const;
   // Renders soon (once control returns to the event loop), after a layer was changed.

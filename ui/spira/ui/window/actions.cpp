@@ -48,6 +48,10 @@ void makeFileActions(Actions& a, QMainWindow* w, QStyle* st)
            QObject::tr("Write the plan as a KUKA KRL or FANUC TP program, with a preview first"),
            {QKeySequence(Qt::CTRL | Qt::Key_E)});
   a.exportProgram->setObjectName(QStringLiteral("exportProgramAction"));
+  a.compareScan = make(w, QObject::tr("Compare &Scan..."),
+                       QObject::tr("Align a scan of the part (PLY, PCD, XYZ, CSV) to it and colour it by its "
+                                   "deviation from the part"));
+  a.compareScan->setObjectName(QStringLiteral("compareScanAction"));
   a.quit = make(w, QObject::tr("&Quit"), QObject::tr("Quit Spira"), {QKeySequence(Qt::CTRL | Qt::Key_Q)});
   a.quit->setMenuRole(QAction::QuitRole);
 }
@@ -114,6 +118,7 @@ void buildMenus(Actions& a, QMainWindow* w, const QList<QAction*>& panelToggles)
   file->addAction(a.saveAs);
   file->addSeparator();
   file->addAction(a.exportProgram);
+  file->addAction(a.compareScan);
   file->addSeparator();
   file->addAction(a.quit);
 

@@ -17,6 +17,7 @@ struct Actions {
   QAction* save = nullptr;
   QAction* saveAs = nullptr;
   QAction* exportProgram = nullptr;
+  QAction* compareScan = nullptr;
   QAction* quit = nullptr;
   QAction* undo = nullptr;
   QAction* redo = nullptr;

@@ -270,6 +270,7 @@ void MainWindow::connectActions()
 {
   const Actions& a = actions_;
   connect(a.importPart, &QAction::triggered, this, &MainWindow::chooseImport);
+  connect(a.compareScan, &QAction::triggered, this, &MainWindow::chooseScan);
   connect(a.openProject, &QAction::triggered, this, &MainWindow::chooseOpen);
   connect(a.save, &QAction::triggered, this, &MainWindow::saveProject);
   connect(a.saveAs, &QAction::triggered, this, &MainWindow::chooseSaveAs);

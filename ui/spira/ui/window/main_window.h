@@ -112,6 +112,10 @@ class MainWindow : public QMainWindow {
   // The file is read in the background (progress and Cancel in the status bar); substrateRead() says
   // how it went, the error shown when it cannot be read. False when another task runs.
   bool useSubstrateFile(const QString& path);
+  // Reads a scan of the part in the background, cleans it of stray points, aligns it to the part
+  // (point-to-plane ICP) and shows it coloured by its deviation; scanCompared() says how it went, the
+  // error shown when it cannot be read or aligned. False when there is no part or another task runs.
+  bool compareScanFile(const QString& path);
   // File > Export Robot Program (made on first use).
   ExportDialog* exportDialog();
   void showExportDialog();
@@ -122,6 +126,7 @@ class MainWindow : public QMainWindow {
  signals:
   void fileOpened(const QString& path, bool ok);
   void substrateRead(const QString& path, bool ok);
+  void scanCompared(const QString& path, bool ok);
   void planFinished(const spira::ui::TaskOutcome& outcome);
 
  protected:
@@ -153,6 +158,7 @@ class MainWindow : public QMainWindow {
   bool maybeSave();
   void chooseImport();
   void chooseSubstrateMesh();
+  void chooseScan();
   void chooseOpen();
   bool chooseSaveAs();
   void undo();
