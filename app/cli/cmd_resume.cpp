@@ -4,16 +4,23 @@
 #include <filesystem>
 #include <iostream>
 #include <nlohmann/json.hpp>
+#include <optional>
 
 #include "builtin_plugins.h"
 #include "cli_common.h"
+#include "robot_output.h"
 #include "spira/base/atomic_file.h"
 #include "spira/base/error.h"
 #include "spira/base/number_text.h"
 #include "spira/base/output_set.h"
 #include "spira/document/plan_report.h"
+#include "spira/pipeline/export_job.h"
+#include "spira/pipeline/prep_schema.h"
+#include "spira/pipeline/program_header.h"
 #include "spira/planning/plan_files.h"
 #include "spira/planning/trajectory_csv_reader.h"
+#include "spira/robotcell/cell_file.h"
+#include "spira/robotcell/robot_cell.h"
 #include "spira/scan/scan_reader.h"
 #include "spira/scan/scan_resume.h"
 #include "spira/scan/scan_writer.h"
@@ -24,20 +31,19 @@ namespace spira::cli {
 namespace {
 
 constexpr const char* kResumeHelp =
-    "usage: spira-cli resume PLAN_DIR --scan SCAN --at INDEX -o DIR [--bead-width MM]\n\n"
-    "Re-plans the rest of the build of PLAN_DIR (written by 'spira-cli plan') from a scan of the wall as it\n"
-    "stands after INDEX points were deposited. The scan (in the part's frame: align one taken elsewhere "
-    "with\n"
-    "scan-compare first) gives the top of the last bead on each generatrix; what it lacks of the plan (or "
-    "has\n"
-    "too much) is made up by laying the next revolutions thicker (or thinner) inside the plan's window, "
-    "over\n"
-    "the fewest revolutions that allows, the torch following the wall as it stands. Writes "
-    "DIR/trajectory.csv\n"
-    "(the points from INDEX on: the arc restarts at the first) and DIR/report.json (the measured edge, the\n"
-    "revolutions taken, the deposits, whether the planned top is reached). Exit 4 when the window cannot "
-    "make\n"
-    "the difference up (the report says by how much and where), 3 for a scan or index that does not fit.\n";
+    "usage: spira-cli resume PLAN_DIR --scan SCAN --at INDEX -o DIR [--bead-width MM]\n"
+    "                        [--export krl|fanuc_tp [exporter flags]]\n\n"
+    "Re-plans the rest of the build of PLAN_DIR (written by 'spira-cli plan') from a scan of the\n"
+    "wall as it stands after INDEX points were deposited. The scan (in the part's frame: align one\n"
+    "taken elsewhere with scan-compare first) gives the top of the last bead on each generatrix;\n"
+    "what it lacks of the plan (or has too much) is made up by laying the next revolutions thicker\n"
+    "(or thinner) inside the plan's window, over the fewest revolutions that allows, the torch\n"
+    "following the wall as it stands. Writes DIR/trajectory.csv (the points from INDEX on: the arc\n"
+    "restarts at the first) and DIR/report.json (the measured edge, the revolutions taken, the\n"
+    "deposits, whether the planned top is reached). With --export, the continuation's robot program\n"
+    "on the plan's cell (report.json's cell_file), one arc from the restart point. Exit 4 when the\n"
+    "window cannot make the difference up (the report says by how much and where; no program is\n"
+    "written), 3 for a scan or index that does not fit.\n";
 
 struct Plan {
   Trajectory trajectory;
@@ -175,6 +181,14 @@ int cmdResume(const std::vector<std::string>& argv)
   const std::string atText = args.takeOption("--at");
   const std::string outText = args.takeOption("-o");
   const double beadWidth = beadWidthFlag(args.takeOption("--bead-width"));
+  const std::string format = args.takeOption("--export");
+  const PluginRegistry& registry = builtinRegistry();
+  const ExporterPlugin* exporter = format.empty() ? nullptr : &exporterFor(registry, format);
+  ParamSet exporterValues, prepValues;
+  if (exporter)
+    args.rest =
+        takeParamFlags(args.rest, {FlagTarget{exporter->id(), &exporter->schema(), &exporterValues},
+                                   FlagTarget{std::string(prepSection().name), &prepSchema(), &prepValues}});
   const auto positional = args.finish("resume", 1, 1);
   if (scanFile.empty())
     throw UsageError("resume needs --scan SCAN", "give the scan of the wall as it stands");
@@ -190,6 +204,13 @@ int cmdResume(const std::vector<std::string>& argv)
   if (!plan.report.window)
     throw InputError("'" + positional[0] + "/report.json' holds no process window (h_min, h_max)",
                      "plan the part again with 'spira-cli plan'");
+  std::optional<RobotCell> cell;
+  if (exporter && !plan.report.cellFile.empty()) {
+    cell.emplace(readCellFile(plan.report.cellFile));
+    if (!cell->canSolve()) throw InputError(cell->ikRefusal(), "choose a cell with a 6-axis arm");
+  }
+  if (exporter && !cell)
+    std::cerr << "note: the plan names no cell: the program's targets are torch poses in the part frame\n";
   NullProgress progress;
   const PointCloud scan = readScan(builtinRegistry(), scanFile, progress);
   const MeasuredEdge edge = measureTopEdge(plan.trajectory, at, scan, beadWidth);
@@ -225,6 +246,18 @@ int cmdResume(const std::vector<std::string>& argv)
   std::cout << "resume from point " << at << ": " << r.summary() << "\n";
   std::cout << "wrote " << (outDir / "trajectory.csv").string() << " (" << resumed.continuation.size()
             << " points, the arc restarting at the first) and report.json\n";
+  if (exporter && !r.reachesTop())
+    std::cout << "the robot program was not written: the continuation does not reach the planned top\n";
+  if (exporter && r.reachesTop()) {
+    ExportJob job;
+    job.exporterId = exporter->id();
+    job.exporterParams = exporterValues;
+    job.prep = prepParamsFrom(prepValues);
+    job.cell = cell ? &*cell : nullptr;
+    job.positionerToleranceDeg = plan.report.positionerToleranceDeg;
+    job.header = programHeader(positional[0], plan.report.cellFile, plan.report);
+    printExportSummary(exportTrajectory(registry, resumed.continuation, job, outDir, progress), std::cout);
+  }
   return r.reachesTop() ? kExitOk : kExitInfeasible;
 }
 

@@ -65,5 +65,31 @@ TEST(CliResume, TheDomeBuiltShortIsResumedToItsTop)
   EXPECT_EQ(runCli({"resume", (dir / "plan").string(), "--at", at, "-o", (dir / "z").string()}).exitCode, 2);
 }
 
+// On the plan's robot cell the continuation is written as a program: one arc from the restart point.
+TEST(CliResume, TheContinuationIsWrittenForThePlansCell)
+{
+  TempDir dir;
+  const std::string dome = (sourceDir() / "resources/samples/dome.stl").string();
+  const std::string cell = (sourceDir() / "resources/cells/fanuc_m20ia_positioner.cell").string();
+  ASSERT_EQ(runCli({"plan", dome, "--cell", cell, "-o", (dir / "plan").string()}).exitCode, 0);
+  const std::string at = std::to_string(rowsOf(dir / "plan" / "trajectory.csv") / 2);
+  ASSERT_EQ(runCli({"scan-sim", (dir / "plan").string(), "--at", at, "--error", "uniform:-8%@30%", "-o",
+                    (dir / "scan.ply").string()})
+                .exitCode,
+            0);
+  const CliRun r = runCli({"resume", (dir / "plan").string(), "--scan", (dir / "scan.ply").string(), "--at",
+                           at, "-o", (dir / "rest").string(), "--export", "fanuc_tp"});
+  ASSERT_EQ(r.exitCode, 0) << r.err << r.out;
+  std::ifstream in(dir / "rest" / "SPIRA_PART.ls");
+  size_t starts = 0, ends = 0;
+  for (std::string line; std::getline(in, line);) {
+    if (line.find("!") != std::string::npos) continue;  // comments
+    starts += line.find("Arc Start[") != std::string::npos;
+    ends += line.find("Arc End[") != std::string::npos;
+  }
+  EXPECT_EQ(starts, 1u);
+  EXPECT_EQ(ends, 1u);
+}
+
 }  // namespace
 }  // namespace spira::test
