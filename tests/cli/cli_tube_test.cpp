@@ -16,6 +16,7 @@
 #include "spira/base/units.h"
 #include "spira/io/mesh_writers.h"
 #include "spira/mesh/mesh_primitives.h"
+#include "spira/mesh/triangle_mesh.h"
 #include "spira/robotcell/cell_file.h"
 #include "spira/robotcell/robot_cell.h"
 #include "support/test_support.h"
@@ -295,6 +296,37 @@ TEST(CliTube, ABendOnAKukaPositionerIsExportedWithTheTorchLeaning)
       "KUKA positioner, torch at %.3f deg: %zu of %zu LIN targets within 1 deg of it, beads within %.3f "
       "deg of vertical\n",
       radToDeg(lean), atLean, lin, worstUp);
+}
+
+// The arm is checked against a substrate mesh as well as the part: a plate with a wall standing between
+// the robot and the part (in one mesh) makes the arm's links collide; the plate alone does not.
+TEST(CliTube, TheArmIsCheckedAgainstASubstrateMesh)
+{
+  TempDir dir;
+  ASSERT_EQ(runCli({"sample", "open-cylinder", "-o", (dir / "cylinder.stl").string()}).exitCode, 0);
+  const auto quad = [](TriangleMesh& m, const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
+    const int o = int(m.vertices.size());
+    m.vertices.insert(m.vertices.end(), {a, b, c, d});
+    m.faces.push_back({o, o + 1, o + 2});
+    m.faces.push_back({o, o + 2, o + 3});
+  };
+  TriangleMesh plate;
+  quad(plate, Vec3(-150, -150, 0), Vec3(150, -150, 0), Vec3(150, 150, 0), Vec3(-150, 150, 0));
+  writeMesh(plate, dir / "plate.stl");
+  TriangleMesh walled = plate;
+  // The KUKA table cell stands the part 1100 mm in front of the robot: the wall is half way.
+  quad(walled, Vec3(-550, -700, -400), Vec3(-550, 700, -400), Vec3(-550, 700, 900), Vec3(-550, -700, 900));
+  writeMesh(walled, dir / "walled.stl");
+  const std::string cell = (sourceDir() / "resources/cells/kuka_kr16_2_table.cell").string();
+  const auto robotCollisions = [&](const std::string& substrate, const std::string& out) {
+    const CliRun r = runCli({"plan", (dir / "cylinder.stl").string(), "--substrate",
+                             (dir / substrate).string(), "--cell", cell, "-o", (dir / out).string()});
+    std::ifstream in(dir / out / "report.json");
+    EXPECT_TRUE(in.good()) << r.err << r.out;
+    return nlohmann::json::parse(in)["robot_collisions"].get<long long>();
+  };
+  EXPECT_EQ(robotCollisions("plate.stl", "plate"), 0);
+  EXPECT_GT(robotCollisions("walled.stl", "walled"), 0);
 }
 
 }  // namespace

@@ -47,7 +47,19 @@ LinkCheck checkRobotLinks(const RobotCell& cell, const JointPathSetup& setup, co
                           const JointTrajectory& joints, const MotionSettings& settings, Progress& progress)
 {
   LinkCheck out;
-  const RobotCollisionModel model(cell, *settings.part, Vec3(600, 600, 20), settings.substrateZ);
+  // A substrate mesh (a pipe, a scanned plate) is carried with the part: the arm is checked against both.
+  TriangleMesh obstacles;
+  const TriangleMesh* carried = settings.part;
+  if (settings.substrate && !settings.substrate->isPlane()) {
+    obstacles = *settings.part;
+    const TriangleMesh& substrate = *settings.substrate->surfaceMesh();
+    const int offset = static_cast<int>(obstacles.vertices.size());
+    obstacles.vertices.insert(obstacles.vertices.end(), substrate.vertices.begin(), substrate.vertices.end());
+    for (const Face& f : substrate.faces)
+      obstacles.faces.push_back({f[0] + offset, f[1] + offset, f[2] + offset});
+    carried = &obstacles;
+  }
+  const RobotCollisionModel model(cell, *carried, Vec3(600, 600, 20), settings.substrateZ);
   out.warnings = model.warnings();
   double since = settings.linkCheckSpacing;
   for (size_t i = 0; i < path.size(); ++i) {

@@ -20,7 +20,8 @@ namespace spira {
 struct MotionSettings {
   double beadWidth = 5.2;   // mm: the deposit tube the torch must clear
   double substrateZ = 0.0;  // mm, part frame: the substrate plane (normal +Z)
-  // A substrate mesh (part frame) in place of the plane, for the torch's collisions; nullptr: the plane.
+  // A substrate mesh (part frame) in place of the plane, for the torch's and the arm's collisions; nullptr:
+  // the plane.
   std::shared_ptr<const SubstrateSurface> substrate;
   // Tilt the torch about the travel direction where it would hit the deposit or the substrate
   // (the source's resolution); off: collisions are only reported.
