@@ -4,6 +4,7 @@
 #include <fstream>
 
 #include <gtest/gtest.h>
+#include <QCheckBox>
 #include <QTest>
 
 #include <vtkActor.h>
@@ -53,6 +54,12 @@ TEST(ScanCompare, AScanIsAlignedAndColouredByItsDeviation)
   EXPECT_GT(layer.pointCount(), scan.size() * 9 / 10);  // less the stray points removed
   EXPECT_TRUE(layer.actor()->GetVisibility());
   EXPECT_TRUE(layer.legend().visible());
+  // The Display dock's box for it comes on with the scan.
+  QCheckBox* box = nullptr;
+  for (QCheckBox* b : w.findChildren<QCheckBox*>())
+    if (b->text() == QStringLiteral("Compared scan")) box = b;
+  ASSERT_NE(box, nullptr);
+  EXPECT_TRUE(box->isEnabled());
   // The scale reaches the noise's 95th percentile: about 2 standard deviations.
   EXPECT_NEAR(layer.scaleLimit(), 1.96 * 0.05, 0.02);
   EXPECT_NE(layer.legend().title().indexOf(QStringLiteral("Scan deviation (mm)")), -1);
@@ -77,6 +84,10 @@ TEST(ScanCompare, WithoutAPartThereIsNothingToCompareWith)
   Document doc;
   MainWindow w(doc, builtinRegistry(), MainWindowOptions{false, false});
   showAndWait(w);
+  for (QCheckBox* b : w.findChildren<QCheckBox*>())
+    if (b->text() == QStringLiteral("Compared scan")) {
+      EXPECT_FALSE(b->isEnabled());
+    }
   EXPECT_FALSE(w.compareScanFile(QStringLiteral("/nonexistent/scan.ply")));
   EXPECT_NE(w.lastErrorMessage().indexOf(QStringLiteral("no part")), -1)
       << w.lastErrorMessage().toStdString();

@@ -252,6 +252,7 @@ void DisplayPanel::resultsChanged()
       paths.stride() > 1 ? tr("Generatrices (1 in %1 of %2)").arg(paths.stride()).arg(paths.generatrixCount())
                          : tr("Generatrices"));
   guide_->setEnabled(paths.hasGuide());
+  scan_->setEnabled(view_->scanLayer().hasScan());
   spiralBox_->setEnabled(spiral.hasTrajectory());
   if (auto* model = qobject_cast<QStandardItemModel*>(channel_->model())) {
     for (int c = 0; c < kSpiralChannelCount; ++c)

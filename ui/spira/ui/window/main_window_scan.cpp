@@ -12,6 +12,7 @@
 #include "spira/scan/scan_processing.h"
 #include "spira/scan/scan_reader.h"
 #include "spira/ui/jobs/task_runner.h"
+#include "spira/ui/panels/display_panel.h"
 #include "spira/ui/panels/log_panel.h"
 #include "spira/ui/views/scan_layer.h"
 #include "spira/ui/views/scene_view.h"
@@ -94,6 +95,7 @@ bool MainWindow::compareScanFile(const QString& path)
         view_->scanLayer().setScan(result->scan, result->deviation, result->stats,
                                    placed ? placed->T_world_part : Transform::Identity());
         view_->scheduleRender();
+        display_->resultsChanged();
         const QLocale loc;
         const Eigen::AngleAxisd turn(result->fit.T_part_scan.linear());
         log_->info(
