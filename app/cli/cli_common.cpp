@@ -102,4 +102,15 @@ PlanFlags::PlanFlags(const PluginRegistry& registry)
   for (const Plugin* p : plugins) targets.push_back(FlagTarget{p->id(), &p->schema(), &values[p->id()]});
 }
 
+double positiveFlag(const std::string& flag, const std::string& text, double fallback, bool zeroAllowed)
+{
+  if (text.empty()) return fallback;
+  const double v = finiteNumberFlag(flag, text, flag + " 0.5");
+  if (v < 0.0 || (!zeroAllowed && v == 0.0))
+    throw UsageError(
+        flag + " " + text + " is " + (zeroAllowed ? "negative" : "not above zero"),
+        "give a number " + std::string(zeroAllowed ? "from 0" : "above 0") + ", e.g. " + flag + " 0.5");
+  return v;
+}
+
 }  // namespace spira::cli

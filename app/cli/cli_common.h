@@ -55,6 +55,9 @@ struct PlanFlags {
 // The value of a numeric flag: a finite number, or a whole number in [min, max]; anything else is a
 // usage error naming the flag, what is wrong and `example`.
 double finiteNumberFlag(const std::string& flag, const std::string& text, const std::string& example);
+// The value of a flag that is a length or count from 0 (`zeroAllowed`) or above 0; `fallback` when the
+// flag was not given. Anything else is a usage error naming the flag.
+double positiveFlag(const std::string& flag, const std::string& text, double fallback, bool zeroAllowed);
 long long wholeNumberFlag(const std::string& flag, const std::string& text, long long min, long long max,
                           const std::string& example);
 

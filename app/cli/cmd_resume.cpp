@@ -97,11 +97,7 @@ ProcessSettings processOf(const Trajectory& plan, double beadWidth)
 
 double beadWidthFlag(const std::string& text)
 {
-  if (text.empty()) return kDefaultBeadWidth;
-  const double w = finiteNumberFlag("--bead-width", text, "--bead-width 5.2");
-  if (!(w > 0.0))
-    throw UsageError("--bead-width " + text + " is not above zero", "give the wall's width in mm");
-  return w;
+  return positiveFlag("--bead-width", text, kDefaultBeadWidth, false);
 }
 
 // "uniform:-8%", "sag:-8%@30%,-y": the relative error, until which share of the plan, and for a sag the

@@ -76,17 +76,6 @@ std::string deviationCsv(const PointCloud& scan, const std::vector<double>& devi
   return out;
 }
 
-double positiveFlag(const std::string& flag, const std::string& text, double fallback, bool zeroAllowed)
-{
-  if (text.empty()) return fallback;
-  const double v = finiteNumberFlag(flag, text, flag + " 0.5");
-  if (v < 0.0 || (!zeroAllowed && v == 0.0))
-    throw UsageError(
-        flag + " " + text + " is " + (zeroAllowed ? "negative" : "not above zero"),
-        "give a number " + std::string(zeroAllowed ? "from 0" : "above 0") + ", e.g. " + flag + " 0.5");
-  return v;
-}
-
 }  // namespace
 
 int cmdScanCompare(const std::vector<std::string>& argv)
