@@ -3,6 +3,7 @@
 #include <cmath>
 #include <iostream>
 #include <nlohmann/json.hpp>
+#include <optional>
 
 #include "builtin_plugins.h"
 #include "cli_common.h"
@@ -13,6 +14,7 @@
 #include "spira/base/output_set.h"
 #include "spira/base/units.h"
 #include "spira/plugin/param_cli.h"
+#include "spira/scan/pair_alignment.h"
 #include "spira/scan/scan_alignment.h"
 #include "spira/scan/scan_deviation.h"
 #include "spira/scan/scan_processing.h"
@@ -25,8 +27,8 @@ namespace {
 
 constexpr const char* kHelp =
     "usage: spira-cli scan-compare PART SCAN -o DIR [--no-align] [--voxel MM] [--align-voxel MM]\n"
-    "                              [--max-distance MM] [--outlier-stddev X] [--scan-scale X] [importer "
-    "flags]\n\n"
+    "                              [--max-distance MM] [--outlier-stddev X] [--scan-scale X] [--pairs FILE]\n"
+    "                              [importer flags]\n\n"
     "Reads SCAN (a point cloud: .ply, .pcd, .xyz/.csv/.txt/.asc columns x y z [nx ny nz]; or a mesh), "
     "removes\n"
     "its stray points (statistical outlier removal, --outlier-stddev, 0 for none; --voxel thins it to one "
@@ -39,7 +41,14 @@ constexpr const char* kHelp =
     "mean, RMS, 95th percentile and a histogram). --align-voxel MM thins the scan for the fit (default 1),\n"
     "--max-distance MM is the farthest a point may lie from the part to count in the fit (default 1).\n"
     "A scan far larger or smaller than the part is refused with its likely unit: --scan-scale X multiplies\n"
-    "its coordinates. Exit 3 for a scan that cannot be read, is too small or does not overlap the part.\n";
+    "its coordinates. --pairs FILE: three or more places picked on the part and on the scan, one pair per\n"
+    "line (part_x,part_y,part_z,scan_x,scan_y,scan_z), fitted by a rigid motion that starts the ICP (with\n"
+    "--no-align, the motion alone); pairs no rigid motion matches within 5 mm are refused.\n"
+    "Exit 3 for a scan that cannot be read, is too small or does not overlap the part.\n";
+
+// Hand-picked points are a few tenths of a millimetre off at best; a pair several millimetres off was
+// picked at another place.
+constexpr double kPairToleranceMm = 5.0;
 
 nlohmann::json transformJson(const Transform& T)
 {
@@ -97,6 +106,7 @@ int cmdScanCompare(const std::vector<std::string>& argv)
   alignment.finalDistanceMm = positiveFlag("--max-distance", args.takeOption("--max-distance"), 1.0, false);
   alignment.startDistanceMm = std::max(10.0, alignment.finalDistanceMm);
   const double scale = positiveFlag("--scan-scale", args.takeOption("--scan-scale"), 1.0, false);
+  const std::string pairsFile = args.takeOption("--pairs");
   args.rest = takeParamFlags(args.rest, flags.targets());
   const auto positional = args.finish("scan-compare", 2, 2);
   if (outText.empty())
@@ -125,10 +135,13 @@ int cmdScanCompare(const std::vector<std::string>& argv)
   const double filterSeconds = since(lap);
   lap = Clock::now();
   AlignResult fit;
-  if (align) {
-    fit = alignScan(scan, part.mesh, Transform::Identity(), alignment, progress);
-    scan = transformed(scan, fit.T_part_scan);
+  std::optional<PairFit> picked;
+  if (!pairsFile.empty()) {
+    picked = fitPointPairs(parsePointPairs(readFile(pairsFile), "'" + pairsFile + "'"), kPairToleranceMm);
+    fit.T_part_scan = picked->T_part_scan;
   }
+  if (align) fit = alignScan(scan, part.mesh, fit.T_part_scan, alignment, progress);
+  if (align || picked) scan = transformed(scan, fit.T_part_scan);
   const double alignSeconds = since(lap);
   lap = Clock::now();
   const std::vector<double> deviation = scanDeviation(scan, part.mesh, progress);
@@ -155,6 +168,11 @@ int cmdScanCompare(const std::vector<std::string>& argv)
   } else {
     j["alignment"] = nullptr;
   }
+  if (picked)
+    j["picked_pairs"] = {{"file", pairsFile},
+                         {"T_part_scan", transformJson(picked->T_part_scan)},
+                         {"rms_mm", picked->rmsMm},
+                         {"residuals_mm", picked->residualsMm}};
   j["deviation"] = statsJson(stats);
   j["timings_s"] = {{"read", readSeconds},
                     {"filter", filterSeconds},
@@ -168,6 +186,10 @@ int cmdScanCompare(const std::vector<std::string>& argv)
 
   std::cout << "scan " << positional[1] << ": " << filtered.read << " points, " << filtered.outliers
             << " stray point(s) removed, " << scan.size() << " compared\n";
+  if (picked)
+    std::cout << "picked pairs: " << picked->residualsMm.size() << ", matched within "
+              << significantText(picked->rmsMm, 3) << " mm RMS" << (align ? ", the fit's starting guess" : "")
+              << "\n";
   if (align)
     std::cout << "aligned: moved " << significantText(fit.T_part_scan.translation().norm(), 4) << " mm and "
               << significantText(radToDeg(Eigen::AngleAxisd(fit.T_part_scan.linear()).angle()), 4)

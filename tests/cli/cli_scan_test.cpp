@@ -95,6 +95,24 @@ TEST(CliScan, BadScansAreRefusedWithTheChangeThatWorks)
   EXPECT_NE(far.err.find("does not overlap the part"), std::string::npos) << far.err;
   EXPECT_FALSE(fs::exists(dir / "b" / "deviation.json"));
 
+  // The same scan with three places picked on the part and on it (0.3 mm off by hand) is brought back.
+  std::ofstream(dir / "pairs.csv") << "part_x,part_y,part_z,scan_x,scan_y,scan_z\n0,0,0,400.3,0,0\n"
+                                      "60,0,0,460,0.2,0\n0,60,30,400,59.8,30.3\n";
+  const CliRun picked = runCli({"scan-compare", junction(), (dir / "far.ply").string(), "-o",
+                                (dir / "b").string(), "--pairs", (dir / "pairs.csv").string()});
+  ASSERT_EQ(picked.exitCode, 0) << picked.err;
+  const nlohmann::json pj = readJson(dir / "b" / "deviation.json");
+  EXPECT_NEAR(pj["alignment"]["translation_mm"].get<double>(), 400.0, 0.02);
+  EXPECT_LT(pj["alignment"]["rotation_deg"].get<double>(), 0.02);
+  EXPECT_GT(pj["picked_pairs"]["rms_mm"].get<double>(), 0.05);  // the picks were rough; ICP was not
+  EXPECT_LT(pj["alignment"]["rms_mm"].get<double>(), 0.05);
+  std::ofstream(dir / "two.csv") << "0,0,0,400,0,0\n60,0,0,460,0,0\n";
+  const CliRun two = runCli({"scan-compare", junction(), (dir / "far.ply").string(), "-o",
+                             (dir / "e").string(), "--pairs", (dir / "two.csv").string()});
+  EXPECT_EQ(two.exitCode, kBadInput);
+  EXPECT_NE(two.err.find("needs three pairs, 2 given"), std::string::npos) << two.err;
+  EXPECT_FALSE(fs::exists(dir / "e" / "deviation.json"));
+
   const CliRun missing =
       runCli({"scan-compare", junction(), (dir / "none.ply").string(), "-o", (dir / "c").string()});
   EXPECT_EQ(missing.exitCode, kBadInput) << missing.out;
