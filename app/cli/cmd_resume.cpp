@@ -74,27 +74,6 @@ size_t atFlag(const std::string& text, const Trajectory& plan)
   return size_t(at);
 }
 
-// The plan's process, as its channels show it: one wire feed throughout (synergic) or one travel speed.
-ProcessSettings processOf(const Trajectory& plan, double beadWidth)
-{
-  ProcessSettings s;
-  s.beadWidth = beadWidth;
-  double wfsMin = 1e300, wfsMax = 0.0, tsMin = 1e300, tsMax = 0.0;
-  for (const TrajectoryPoint& p : plan.points) {
-    if (!p.arcOn) continue;
-    wfsMin = std::min(wfsMin, p.wireFeed), wfsMax = std::max(wfsMax, p.wireFeed);
-    tsMin = std::min(tsMin, p.travelSpeed), tsMax = std::max(tsMax, p.travelSpeed);
-  }
-  if (wfsMax > 0.0 && wfsMax - wfsMin <= 1e-9 * wfsMax) {
-    s.mode = ProcessMode::Synergic;
-    s.wireFeed = wfsMax;
-  } else if (tsMax > 0.0) {
-    s.mode = ProcessMode::ConstantTravelSpeed;
-    s.travelSpeed = tsMax;
-  }
-  return s;
-}
-
 double beadWidthFlag(const std::string& text)
 {
   return positiveFlag("--bead-width", text, kDefaultBeadWidth, false);
@@ -213,7 +192,7 @@ int cmdResume(const std::vector<std::string>& argv)
   ResumeSettings settings;
   settings.hMin = plan.report.window->hMin;
   settings.hMax = plan.report.window->hMax;
-  settings.process = processOf(plan.trajectory, beadWidth);
+  settings.process = processOfPlan(plan.trajectory, beadWidth);
   const Resumed resumed = resumeFromEdge(plan.trajectory, at, edge, settings);
   const ResumeReport& r = resumed.report;
 

@@ -107,6 +107,12 @@ TEST(Invalidation, EachSettingKindDropsExactlyItsStages)
        kAllStages},
       {"cell", [](Document& d) { d.setCell(CellRecord()); }, before(Stage::Kinematics)},
       {"cell removed", [](Document& d) { d.clearCell(); }, before(Stage::Kinematics)},
+      // A scan measures the part; no stage is planned from it.
+      {"scan compared",
+       [](Document& d) {
+         d.setScan(ScanRecord{"wall.ply", Transform::Identity(), 0.02, 10});
+       },
+       kAllStages},
       {"exporter params", [](Document& d) { d.setParam("export.krl", "base", std::int64_t{1}); },
        before(Stage::Export)},
       {"importer params", [](Document& d) { d.setParam("import.stl", "unit", std::string("in")); },

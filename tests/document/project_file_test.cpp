@@ -14,6 +14,7 @@
 #include "spira/base/version.h"
 #include "spira/document/document.h"
 #include "spira/document/project_file.h"
+#include "spira/io/json_codec.h"
 #include "spira/path/dwell.h"
 #include "support/test_support.h"
 
@@ -407,6 +408,41 @@ TEST(ProjectFile, CellFilesAreFoundRelativeToTheProjectThenWhereTheyWere)
   // Bytes alone (no folder) keep the absolute paths.
   EXPECT_EQ(decodeProject(test::readBytes(dir / "moved" / "job.spira")).cell->robotUrdf,
             (dir / "job" / "robots" / "arm.urdf").string());
+}
+
+// A compared scan is kept as its file and alignment, not its points; like the cell's files, the file
+// is found beside the project when both moved together.
+TEST(ProjectFile, AScanIsKeptAsItsFileAndAlignment)
+{
+  namespace fs = std::filesystem;
+  test::TempDir dir;
+  fs::create_directories(dir / "job" / "scans");
+  test::writeBytes(dir / "job" / "scans" / "wall.ply", "ply");
+  ScanRecord scan;
+  scan.file = (dir / "job" / "scans" / "wall.ply").string();
+  scan.T_part_scan = Transform(Eigen::AngleAxisd(0.3, Vec3(0, 0.6, 0.8)));
+  scan.T_part_scan.translation() = Vec3(1.25, -3.5, 0.125);
+  scan.rmsMm = 0.031;
+  scan.depositedTo = 8100;
+  Document doc;
+  doc.setScan(scan);
+  EXPECT_EQ(doc.undoStack().undoText(), "Compare scan");
+  doc.saveAs(dir / "job" / "job.spira");
+  EXPECT_EQ(payloadOf(test::readBytes(dir / "job" / "job.spira"))["scan"]["relative_file"], "scans/wall.ply");
+
+  fs::rename(dir / "job", dir / "moved");
+  const DocumentState moved = loadProject(dir / "moved" / "job.spira");
+  ASSERT_TRUE(moved.scan);
+  EXPECT_EQ(moved.scan->file, (dir / "moved" / "scans" / "wall.ply").string());
+  EXPECT_TRUE(codec::sameTransform(moved.scan->T_part_scan, scan.T_part_scan));
+  EXPECT_EQ(moved.scan->rmsMm, 0.031);
+  EXPECT_EQ(moved.scan->depositedTo, 8100u);
+
+  // A project without one (older ones too) has none.
+  Document empty;
+  empty.saveAs(dir / "empty.spira");
+  EXPECT_FALSE(loadProject(dir / "empty.spira").scan);
+  EXPECT_FALSE(payloadOf(test::readBytes(dir / "empty.spira")).contains("scan"));
 }
 
 }  // namespace

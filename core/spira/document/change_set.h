@@ -18,6 +18,7 @@ enum class Change : std::uint32_t {
   UndoStack = 1u << 5,  // steps, undo/redo texts
   Modified = 1u << 6,   // Document::isModified() flipped
   FilePath = 1u << 7,
+  Scan = 1u << 8,  // the compared scan (an input of no stage: no result goes stale)
 };
 
 struct ChangeSet {

@@ -208,6 +208,16 @@ void Document::setSubstrate(Substrate substrate, const std::string& name)
        [&](DocumentState& s) { s.substrate = std::make_shared<const Substrate>(std::move(substrate)); });
 }
 
+void Document::setScan(ScanRecord scan, const std::string& name)
+{
+  edit(name, [&](DocumentState& s) { s.scan = std::make_shared<const ScanRecord>(std::move(scan)); });
+}
+
+void Document::clearScan(const std::string& name)
+{
+  edit(name, [](DocumentState& s) { s.scan.reset(); });
+}
+
 void Document::setCell(CellRecord cell, const std::string& name)
 {
   edit(name, [&](DocumentState& s) { s.cell = std::make_shared<const CellRecord>(std::move(cell)); });

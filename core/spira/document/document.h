@@ -42,6 +42,7 @@ class Document {
   const std::shared_ptr<const Substrate>& substrate() const { return state_.substrate; }
   const std::shared_ptr<const CellRecord>& cell() const { return state_.cell; }
   const std::shared_ptr<const PlanSettings>& settings() const { return state_.settings; }
+  const std::shared_ptr<const ScanRecord>& scan() const { return state_.scan; }
   const Results& results() const { return state_.results; }
   // Increases on every change of the state (edits, undo/redo, results, open).
   std::uint64_t revision() const { return revision_; }
@@ -60,6 +61,8 @@ class Document {
   void setSubstrate(Substrate substrate, const std::string& name = "Change substrate");
   void setCell(CellRecord cell, const std::string& name = "Change cell");
   void clearCell(const std::string& name = "Remove cell");
+  void setScan(ScanRecord scan, const std::string& name = "Compare scan");
+  void clearScan(const std::string& name = "Remove scan");
   void setPlanSettings(PlanSettings settings, const std::string& name = "Change plan settings");
   void setDecomposer(const std::string& pluginId, const std::string& name = "Choose decomposer");
   void setClosureFinder(const std::string& pluginId, const std::string& name = "Choose closure finder");

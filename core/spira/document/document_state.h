@@ -5,6 +5,7 @@
 #include "spira/document/part.h"
 #include "spira/document/plan_settings.h"
 #include "spira/document/results.h"
+#include "spira/document/scan_record.h"
 #include "spira/document/substrate.h"
 #include "spira/robotcell/cell_record.h"
 
@@ -18,9 +19,10 @@ struct DocumentState {
   std::shared_ptr<const Substrate> substrate = std::make_shared<const Substrate>();
   std::shared_ptr<const CellRecord> cell;  // null: no cell chosen
   std::shared_ptr<const PlanSettings> settings = std::make_shared<const PlanSettings>();
+  std::shared_ptr<const ScanRecord> scan;  // null: no scan compared
   Results results;
 
-  // Same inputs (part, substrate, cell, settings), compared by pointer then by value.
+  // Same inputs (part, substrate, cell, settings, scan), compared by pointer then by value.
   bool sameInputs(const DocumentState& o) const;
   bool operator==(const DocumentState& o) const { return sameInputs(o) && results == o.results; }
   bool operator!=(const DocumentState& o) const { return !(*this == o); }

@@ -136,6 +136,7 @@ ChangeSet diffStates(const DocumentState& before, const DocumentState& after)
   if (!sameValue(before.part, after.part)) cs.add(Change::Part);
   if (!sameValue(before.substrate, after.substrate)) cs.add(Change::Substrate);
   if (!sameValue(before.cell, after.cell)) cs.add(Change::Cell);
+  if (!sameValue(before.scan, after.scan)) cs.add(Change::Scan);
   if (!sameValue(before.settings, after.settings)) {
     cs.add(Change::Settings);
     static const PlanSettings kDefaults;

@@ -79,6 +79,12 @@ nlohmann::json toProjectJson(const DocumentState& s, const std::filesystem::path
   j["substrate"] = substrateToJson(s.substrate ? *s.substrate : Substrate());
   j["cell"] = s.cell ? cellRecordToJson(*s.cell) : nlohmann::json(nullptr);
   if (s.cell && !dir.empty()) j[kRelativePaths] = relativePaths(*s.cell, dir);
+  if (s.scan) {
+    j["scan"] = scanRecordToJson(*s.scan);
+    if (!dir.empty())
+      if (const std::string r = relativeTo(s.scan->file, dir); r != s.scan->file)
+        j["scan"]["relative_file"] = r;
+  }
   j["plan"] = planSettingsToJson(s.settings ? *s.settings : PlanSettings());
   j["results"] = resultsToJson(s.results);
   return j;
@@ -105,6 +111,11 @@ DocumentState fromProjectJson(const nlohmann::json& j, const std::filesystem::pa
     s.cell = std::make_shared<const CellRecord>(std::move(record));
   }
   s.settings = std::make_shared<const PlanSettings>(planSettingsFromJson(codec::field(j, "plan", what)));
+  if (j.contains("scan") && !j["scan"].is_null()) {
+    ScanRecord scan = scanRecordFromJson(j["scan"]);
+    if (!dir.empty()) resolveRelative(j["scan"], "relative_file", dir, scan.file);
+    s.scan = std::make_shared<const ScanRecord>(std::move(scan));
+  }
   s.results = resultsFromJson(codec::field(j, "results", what));
   return s;
 }

@@ -111,4 +111,24 @@ Resumed resumeFromEdge(const Trajectory& plan, size_t at, const MeasuredEdge& ed
   return out;
 }
 
+ProcessSettings processOfPlan(const Trajectory& plan, double beadWidth)
+{
+  ProcessSettings s;
+  s.beadWidth = beadWidth;
+  double wfsMin = 1e300, wfsMax = 0.0, tsMax = 0.0;
+  for (const TrajectoryPoint& p : plan.points) {
+    if (!p.arcOn) continue;
+    wfsMin = std::min(wfsMin, p.wireFeed), wfsMax = std::max(wfsMax, p.wireFeed);
+    tsMax = std::max(tsMax, p.travelSpeed);
+  }
+  if (wfsMax > 0.0 && wfsMax - wfsMin <= 1e-9 * wfsMax) {
+    s.mode = ProcessMode::Synergic;
+    s.wireFeed = wfsMax;
+  } else if (tsMax > 0.0) {
+    s.mode = ProcessMode::ConstantTravelSpeed;
+    s.travelSpeed = tsMax;
+  }
+  return s;
+}
+
 }  // namespace spira

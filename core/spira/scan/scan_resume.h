@@ -36,6 +36,10 @@ struct Resumed {
   ResumeReport report;
 };
 
+// The process a plan was laid with, as its channels show it: one wire feed throughout (synergic) or
+// else one travel speed; the re-planned heights keep it.
+ProcessSettings processOfPlan(const Trajectory& plan, double beadWidth);
+
 // Throws InputError for an index outside the plan, a window that does not hold the plan, or a plan
 // whose remaining points lie on generatrices the edge does not have.
 Resumed resumeFromEdge(const Trajectory& plan, size_t at, const MeasuredEdge& edge,
