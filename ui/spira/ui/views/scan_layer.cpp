@@ -30,6 +30,7 @@ ScanLayer::ScanLayer(vtkRenderer* renderer) : legend_(renderer, ColorLegend::Sid
   actor_->SetMapper(mapper_);
   actor_->GetProperty()->SetPointSize(3.0);
   actor_->GetProperty()->LightingOff();
+  actor_->GetProperty()->SetColor(0.55, 0.55, 0.58);
   actor_->VisibilityOff();
   renderer->AddActor(actor_);
   legend_.setVisible(false);
@@ -41,7 +42,8 @@ void ScanLayer::setScan(const PointCloud& cloud, const std::vector<double>& devi
                         const DeviationStats& stats, const Transform& T_world_part)
 {
   cloud_->Initialize();
-  count_ = std::min(cloud.size(), deviation.size());
+  aligned_ = !deviation.empty();
+  count_ = aligned_ ? std::min(cloud.size(), deviation.size()) : cloud.size();
   if (count_ > 0) {
     vtkNew<vtkPoints> points;
     points->SetDataTypeToDouble();
@@ -53,7 +55,7 @@ void ScanLayer::setScan(const PointCloud& cloud, const std::vector<double>& devi
     for (size_t i = 0; i < count_; ++i) {
       const Vec3 w = T_world_part * cloud.points[i];
       points->SetPoint(static_cast<vtkIdType>(i), w.x(), w.y(), w.z());
-      values->SetValue(static_cast<vtkIdType>(i), static_cast<float>(deviation[i]));
+      values->SetValue(static_cast<vtkIdType>(i), aligned_ ? static_cast<float>(deviation[i]) : 0.0f);
       vertices->InsertNextCell(1);
       vertices->InsertCellPoint(static_cast<vtkIdType>(i));
     }
@@ -66,7 +68,7 @@ void ScanLayer::setScan(const PointCloud& cloud, const std::vector<double>& devi
     vtkSmartPointer<vtkLookupTable> lut = makeLookupTable(ColorMap::Window, -limit_, limit_);
     mapper_->SetLookupTable(lut);
     mapper_->SetScalarRange(-limit_, limit_);
-    mapper_->ScalarVisibilityOn();
+    mapper_->SetScalarVisibility(aligned_);
     legend_.setLookupTable(lut);
     legend_.setLabelFormat(labelFormatFor(-limit_, limit_));
     const QLocale locale;
@@ -87,7 +89,7 @@ void ScanLayer::update()
 {
   const bool on = visible_ && count_ > 0;
   actor_->SetVisibility(on);
-  legend_.setVisible(on);
+  legend_.setVisible(on && aligned_);
 }
 
 }  // namespace spira::ui

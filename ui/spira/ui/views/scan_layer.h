@@ -27,12 +27,14 @@ class ScanLayer {
   explicit ScanLayer(vtkRenderer* renderer);
   ~ScanLayer();
 
-  // The cloud in the part's frame; an empty cloud clears the layer.
+  // The cloud in the part's frame; an empty cloud clears the layer. Without deviations (a scan not yet
+  // placed on the part) the points are drawn plain grey, with no legend.
   void setScan(const PointCloud& cloud, const std::vector<double>& deviation, const DeviationStats& stats,
                const Transform& T_world_part);
   void setVisible(bool on);
   bool visible() const { return visible_; }
   bool hasScan() const { return count_ > 0; }
+  bool aligned() const { return aligned_; }
   size_t pointCount() const { return count_; }
   double scaleLimit() const { return limit_; }  // mm: the legend runs from -limit to +limit
   const ColorLegend& legend() const { return legend_; }
@@ -46,6 +48,7 @@ class ScanLayer {
   vtkNew<vtkActor> actor_;
   ColorLegend legend_;
   size_t count_ = 0;
+  bool aligned_ = false;
   double limit_ = 0.0;
   bool visible_ = true;
 };

@@ -405,10 +405,26 @@ void SceneView::setCameraPreset(CameraPreset preset)
   fitView();
 }
 
+vtkActor* SceneView::partActor() const
+{
+  return scene_->part;
+}
+
 void SceneView::fitView()
+{
+  fitViewIncluding(BoundingBox());
+}
+
+void SceneView::fitViewIncluding(const BoundingBox& extra)
 {
   Scene& s = *scene_;
   Bounds b = s.partBounds;
+  if (!extra.empty()) {
+    if (!validBounds(b))
+      b = {extra.min.x(), extra.max.x(), extra.min.y(), extra.max.y(), extra.min.z(), extra.max.z()};
+    for (int k = 0; k < 3; ++k)
+      b[2 * k] = std::min(b[2 * k], extra.min[k]), b[2 * k + 1] = std::max(b[2 * k + 1], extra.max[k]);
+  }
   if (!validBounds(b)) {
     const double z = s.substrateZ.value_or(0.0);
     b = {-80.0, 80.0, -80.0, 80.0, z, z};  // the plate drawn when there is no part

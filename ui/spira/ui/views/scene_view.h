@@ -11,10 +11,12 @@
 
 class QTimer;
 class QVTKOpenGLNativeWidget;
+class vtkActor;
 class vtkPolyData;
 class vtkRenderer;
 
 namespace spira {
+struct BoundingBox;
 struct TriangleMesh;
 struct Results;
 }  // namespace spira
@@ -82,6 +84,10 @@ class SceneView : public QWidget {
   void setCameraPreset(CameraPreset preset);
   // Frames the part (or the plate when there is no part) without changing the view direction.
   void fitView();
+  // Fits the part and `extra` (world frame; a scan not yet placed on the part).
+  void fitViewIncluding(const BoundingBox& extra);
+  // The part's surface, for picking places on it.
+  vtkActor* partActor() const;
 
   // Renders now and returns the 3D view's pixels.
   QImage grabImage();

@@ -93,6 +93,7 @@ MainWindow::MainWindow(Document& doc, const PluginRegistry& registry, MainWindow
   connectActions();
   // Placement dock, presets, themes, help, autosave: before the layout is restored, which includes its dock.
   installComfortFeatures();
+  installScanWorkflow();
   restoreLayout();
 
   subscription_ = doc_.subscribe([this](const ChangeSet& c) { onDocumentChanged(c); });

@@ -36,6 +36,7 @@ class CellWorkspace;
 class ComfortFeatures;
 class PointSelection;
 class RecentFiles;
+class ScanWorkflow;
 class SceneView;
 class TaskRunner;
 struct TaskOutcome;
@@ -116,6 +117,8 @@ class MainWindow : public QMainWindow {
   // (point-to-plane ICP) and shows it coloured by its deviation; scanCompared() says how it went, the
   // error shown when it cannot be read or aligned. False when there is no part or another task runs.
   bool compareScanFile(const QString& path);
+  // The Scan dock, alignment by picked pairs and Resume from Scan.
+  ScanWorkflow* scanWorkflow() const { return scan_; }
   // File > Export Robot Program (made on first use).
   ExportDialog* exportDialog();
   void showExportDialog();
@@ -143,6 +146,7 @@ class MainWindow : public QMainWindow {
   void createStatusBar();
   void createCellWorkspace();
   void installComfortFeatures();
+  void installScanWorkflow();
   void restoreLayout();
   void connectActions();
   void onDocumentChanged(const ChangeSet& changes);
@@ -192,6 +196,7 @@ class MainWindow : public QMainWindow {
   bool hadThermal_ = false;
   CellWorkspace* cellWorkspace_ = nullptr;
   ComfortFeatures* comfort_ = nullptr;
+  ScanWorkflow* scan_ = nullptr;
   ExportDialog* exportDialog_ = nullptr;
   CompareView* compareView_ = nullptr;
   QLabel* meshLabel_ = nullptr;
