@@ -8,6 +8,8 @@
 
 #include "builtin_plugins.h"
 #include "cli_common.h"
+#include "plan_folder.h"
+#include "quality_outputs.h"
 #include "robot_output.h"
 #include "spira/base/atomic_file.h"
 #include "spira/base/error.h"
@@ -18,7 +20,6 @@
 #include "spira/pipeline/prep_schema.h"
 #include "spira/pipeline/program_header.h"
 #include "spira/planning/plan_files.h"
-#include "spira/planning/trajectory_csv_reader.h"
 #include "spira/robotcell/cell_file.h"
 #include "spira/robotcell/robot_cell.h"
 #include "spira/scan/scan_reader.h"
@@ -39,45 +40,11 @@ constexpr const char* kResumeHelp =
     "what it lacks of the plan (or has too much) is made up by laying the next revolutions thicker\n"
     "(or thinner) inside the plan's window, over the fewest revolutions that allows, the torch\n"
     "following the wall as it stands. Writes DIR/trajectory.csv (the points from INDEX on: the arc\n"
-    "restarts at the first) and DIR/report.json (the measured edge, the revolutions taken, the\n"
-    "deposits, whether the planned top is reached). With --export, the continuation's robot program\n"
-    "on the plan's cell (report.json's cell_file), one arc from the restart point. Exit 4 when the\n"
-    "window cannot make the difference up (the report says by how much and where; no program is\n"
-    "written), 3 for a scan or index that does not fit.\n";
-
-struct Plan {
-  Trajectory trajectory;
-  PlanReportSummary report;
-};
-
-Plan readPlanFolder(const fs::path& dir)
-{
-  if (!fs::is_directory(dir))
-    throw InputError("'" + dir.string() + "' is not a plan folder", "give the -o folder of 'spira-cli plan'");
-  verifyOutputSet(dir);
-  Plan p;
-  p.trajectory = readTrajectoryCsv(dir / "trajectory.csv");
-  const fs::path report = dir / "report.json";
-  if (fs::exists(report))
-    p.report = summarisePlanReport(parsePlanReport(readFile(report), report.string()), report.string());
-  return p;
-}
-
-size_t atFlag(const std::string& text, const Trajectory& plan)
-{
-  if (text.empty())
-    throw UsageError("--at INDEX is missing", "give the number of points deposited, e.g. --at 5000");
-  const long long at = wholeNumberFlag("--at", text, 0, 1000000000000LL, "--at 5000");
-  if (at < 1 || size_t(at) > plan.size())
-    throw InputError("--at " + text + " is outside the plan's " + std::to_string(plan.size()) + " points",
-                     "give the number of points deposited, from 1 to " + std::to_string(plan.size()));
-  return size_t(at);
-}
-
-double beadWidthFlag(const std::string& text)
-{
-  return positiveFlag("--bead-width", text, kDefaultBeadWidth, false);
-}
+    "restarts at the first) and DIR/report.json (the measured edge and its process index, the\n"
+    "revolutions taken, the deposits, whether the planned top is reached). With --export, the\n"
+    "continuation's robot program on the plan's cell (report.json's cell_file), one arc from the\n"
+    "restart point. Exit 4 when the window cannot make the difference up (the report says by how\n"
+    "much and where; no program is written), 3 for a scan or index that does not fit.\n";
 
 // "uniform:-8%", "sag:-8%@30%,-y": the relative error, until which share of the plan, and for a sag the
 // side (x, -x, y, -y).
@@ -129,7 +96,7 @@ DepositErrors errorFlag(const std::string& text)
 int simulatePlanScan(Args& args, const std::string& planDir, const fs::path& out, double noiseMm,
                      long long seed)
 {
-  const Plan plan = readPlanFolder(planDir);
+  const PlanFolder plan = readPlanFolder(planDir);
   const size_t at = atFlag(args.takeOption("--at"), plan.trajectory);
   const DepositErrors errors = errorFlag(args.takeOption("--error"));
   const double beadWidth = beadWidthFlag(args.takeOption("--bead-width"));
@@ -170,7 +137,7 @@ int cmdResume(const std::vector<std::string>& argv)
   if (outText.empty()) throw UsageError("resume needs -o DIR", "add -o DIR for the continuation");
   const fs::path outDir(outText);
   ensureWritableDirectory(outDir);
-  const Plan plan = readPlanFolder(positional[0]);
+  const PlanFolder plan = readPlanFolder(positional[0]);
   const size_t at = atFlag(atText, plan.trajectory);
   if (at >= plan.trajectory.size())
     throw InputError("--at " + atText + ": the plan has " + std::to_string(plan.trajectory.size()) +
@@ -214,11 +181,15 @@ int cmdResume(const std::vector<std::string>& argv)
   j["reaches_top"] = r.reachesTop();
   j["leftover_mm"] = r.leftoverMax;
   if (!r.reachesTop()) j["leftover_point"] = r.leftoverPoint;
+  const IndexStats process = indexStats(processIndex(plan.trajectory, edge));
+  j["process_index"] = indexStatsJson(process);
   j["summary"] = r.summary();
   replaceOutputSet(
       outDir, OutputKind::Plan,
       {{"trajectory.csv", trajectoryCsv(resumed.continuation)}, {"report.json", j.dump(2) + "\n"}});
   std::cout << "resume from point " << at << ": " << r.summary() << "\n";
+  std::cout << "process index of the wall as built (1 = as planned): mean "
+            << significantText(process.mean, 4) << ", min " << significantText(process.min, 4) << "\n";
   std::cout << "wrote " << (outDir / "trajectory.csv").string() << " (" << resumed.continuation.size()
             << " points, the arc restarting at the first) and report.json\n";
   if (exporter && !r.reachesTop())

@@ -8,6 +8,8 @@
 #include "builtin_plugins.h"
 #include "cli_common.h"
 #include "part_loading.h"
+#include "plan_folder.h"
+#include "quality_outputs.h"
 #include "spira/base/atomic_file.h"
 #include "spira/base/error.h"
 #include "spira/base/number_text.h"
@@ -28,7 +30,7 @@ namespace {
 constexpr const char* kHelp =
     "usage: spira-cli scan-compare PART SCAN -o DIR [--no-align] [--voxel MM] [--align-voxel MM]\n"
     "                              [--max-distance MM] [--outlier-stddev X] [--scan-scale X] [--pairs FILE]\n"
-    "                              [importer flags]\n\n"
+    "                              [--plan PLAN_DIR --at INDEX [--bead-width MM]] [importer flags]\n\n"
     "Reads SCAN (a point cloud: .ply, .pcd, .xyz/.csv/.txt/.asc columns x y z [nx ny nz]; or a mesh), "
     "removes\n"
     "its stray points (statistical outlier removal, --outlier-stddev, 0 for none; --voxel thins it to one "
@@ -44,7 +46,14 @@ constexpr const char* kHelp =
     "its coordinates. --pairs FILE: three or more places picked on the part and on the scan, one pair per\n"
     "line (part_x,part_y,part_z,scan_x,scan_y,scan_z), fitted by a rigid motion that starts the ICP (with\n"
     "--no-align, the motion alone); pairs no rigid motion matches within 5 mm are refused.\n"
-    "Exit 3 for a scan that cannot be read, is too small or does not overlap the part.\n";
+    "Exit 3 for a scan that cannot be read, is too small or does not overlap the part.\n"
+    "With --plan PLAN_DIR (the plan PART was built from) and --at INDEX (its points deposited when the scan\n"
+    "was taken), the quality indices (docs/scans.md; 1 = as planned, 0.92 = off by 8 % of a bead height):\n"
+    "trajectory (the plan against the part), process (the measured top edge against the plan) and global\n"
+    "(the scan against the part), in DIR/quality.csv (per plan point), deviation.csv's global_index and\n"
+    "deviation.json's quality_indices. PART is moved as the plan moved it (report.json's dropped_mm), and\n"
+    "everything is in the plan's frame. --bead-width MM: the bead the top edge is measured with (default\n"
+    "5.2).\n";
 
 // Hand-picked points are a few tenths of a millimetre off at best; a pair several millimetres off was
 // picked at another place.
@@ -68,9 +77,10 @@ nlohmann::json statsJson(const DeviationStats& s)
           {"histogram", {{"min_mm", s.binMin}, {"bin_mm", s.binWidth}, {"counts", s.histogram}}}};
 }
 
-std::string deviationCsv(const PointCloud& scan, const std::vector<double>& deviation)
+std::string deviationCsv(const PointCloud& scan, const std::vector<double>& deviation,
+                         const std::vector<double>* global)
 {
-  std::string out = "index,x,y,z,deviation_mm\n";
+  std::string out = global ? "index,x,y,z,deviation_mm,global_index\n" : "index,x,y,z,deviation_mm\n";
   out.reserve(out.size() + scan.size() * 64);
   for (size_t i = 0; i < scan.size(); ++i) {
     appendNumber(out, static_cast<long long>(i));
@@ -80,6 +90,10 @@ std::string deviationCsv(const PointCloud& scan, const std::vector<double>& devi
     }
     out += ',';
     appendNumber(out, deviation[i]);
+    if (global) {
+      out += ',';
+      appendNumber(out, (*global)[i]);
+    }
     out += '\n';
   }
   return out;
@@ -107,12 +121,31 @@ int cmdScanCompare(const std::vector<std::string>& argv)
   alignment.startDistanceMm = std::max(10.0, alignment.finalDistanceMm);
   const double scale = positiveFlag("--scan-scale", args.takeOption("--scan-scale"), 1.0, false);
   const std::string pairsFile = args.takeOption("--pairs");
+  const std::string planText = args.takeOption("--plan");
+  const std::string atText = args.takeOption("--at");
+  const std::string beadText = args.takeOption("--bead-width");
   args.rest = takeParamFlags(args.rest, flags.targets());
   const auto positional = args.finish("scan-compare", 2, 2);
   if (outText.empty())
     throw UsageError("scan-compare needs -o DIR", "add -o DIR for the aligned scan and deviation");
+  if (planText.empty() && !atText.empty())
+    throw UsageError("--at needs --plan: the index counts the points of a plan",
+                     "add --plan PLAN_DIR (the plan the part was built from), or leave --at out");
+  if (!planText.empty() && atText.empty())
+    throw UsageError("--plan needs --at INDEX: how much of the plan was built when the scan was taken",
+                     "add --at and the number of the plan's points deposited, e.g. --at 5000");
+  if (planText.empty() && !beadText.empty())
+    throw UsageError("--bead-width is for the quality indices, which need --plan",
+                     "add --plan PLAN_DIR --at INDEX, or leave --bead-width out");
+  const double beadWidth = beadWidthFlag(beadText);
   const std::filesystem::path outDir(outText);
   ensureWritableDirectory(outDir);
+  std::optional<PlanFolder> plan;
+  size_t at = 0;
+  if (!planText.empty()) {
+    plan = readPlanFolder(planText);
+    at = atFlag(atText, plan->trajectory);
+  }
 
   using Clock = std::chrono::steady_clock;
   const auto start = Clock::now();
@@ -120,7 +153,16 @@ int cmdScanCompare(const std::vector<std::string>& argv)
     return std::chrono::duration<double>(Clock::now() - t).count();
   };
   NullProgress progress;
-  const ImportedPart part = flags.import(positional[0], progress);
+  ImportedPart part = flags.import(positional[0], progress);
+  if (plan && plan->droppedMm != 0.0) {
+    // The plan's points are where the plan put the part: the part, and the scan aligned to it, go there.
+    for (Vec3& v : part.mesh.vertices) v.z() += plan->droppedMm;
+    std::cout << "moved the part " << significantText(plan->droppedMm, 6)
+              << " mm along z, as the plan dropped it onto the substrate\n";
+  }
+  if (plan && plan->levelledBase)
+    std::cerr << "note: the plan cut the part's base level (--level-base); the part is compared as its file "
+                 "holds it, the cut-off sliver below the plate\n";
   auto lap = Clock::now();
   PointCloud scan = readScan(registry, positional[1], progress);
   if (scale != 1.0)
@@ -147,6 +189,12 @@ int cmdScanCompare(const std::vector<std::string>& argv)
   const std::vector<double> deviation = scanDeviation(scan, part.mesh, progress);
   const DeviationStats stats = deviationStats(deviation);
   const double deviationSeconds = since(lap);
+  std::optional<CompareQuality> quality;
+  if (plan) {
+    lap = Clock::now();
+    quality = compareQuality(*plan, at, part.mesh, positional[0], scan, deviation, beadWidth);
+  }
+  const double qualitySeconds = plan ? since(lap) : 0.0;
 
   nlohmann::json j;
   j["part"] = positional[0];
@@ -174,15 +222,19 @@ int cmdScanCompare(const std::vector<std::string>& argv)
                          {"rms_mm", picked->rmsMm},
                          {"residuals_mm", picked->residualsMm}};
   j["deviation"] = statsJson(stats);
+  if (quality) j["quality_indices"] = qualityJson(planText, *quality);
   j["timings_s"] = {{"read", readSeconds},
                     {"filter", filterSeconds},
                     {"align", alignSeconds},
                     {"deviation", deviationSeconds},
                     {"total", since(start)}};
-  replaceOutputSet(outDir, OutputKind::Scan,
-                   {{"aligned_scan.ply", pointCloudPly(scan, &deviation, "deviation")},
-                    {"deviation.csv", deviationCsv(scan, deviation)},
-                    {"deviation.json", j.dump(2) + "\n"}});
+  if (quality) j["timings_s"]["quality_indices"] = qualitySeconds;
+  std::vector<OutputFile> files = {
+      {"aligned_scan.ply", pointCloudPly(scan, &deviation, "deviation")},
+      {"deviation.csv", deviationCsv(scan, deviation, quality ? &quality->global : nullptr)},
+      {"deviation.json", j.dump(2) + "\n"}};
+  if (quality) files.push_back({"quality.csv", qualityCsv(plan->trajectory, *quality)});
+  replaceOutputSet(outDir, OutputKind::Scan, files);
 
   std::cout << "scan " << positional[1] << ": " << filtered.read << " points, " << filtered.outliers
             << " stray point(s) removed, " << scan.size() << " compared\n";
@@ -198,7 +250,9 @@ int cmdScanCompare(const std::vector<std::string>& argv)
   std::cout << "deviation from the part (mm, + outside): mean " << significantText(stats.mean, 3) << ", RMS "
             << significantText(stats.rms, 3) << ", 95 % within " << significantText(stats.p95, 3) << ", from "
             << significantText(stats.min, 3) << " to " << significantText(stats.max, 3) << "\n";
-  std::cout << "wrote " << (outDir / "aligned_scan.ply").string() << ", deviation.csv and deviation.json\n";
+  if (quality) std::cout << qualitySummary(*quality) << "\n";
+  std::cout << "wrote " << (outDir / "aligned_scan.ply").string() << ", deviation.csv"
+            << (quality ? ", deviation.json and quality.csv\n" : " and deviation.json\n");
   return kExitOk;
 }
 

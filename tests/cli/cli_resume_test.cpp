@@ -44,6 +44,11 @@ TEST(CliResume, TheDomeBuiltShortIsResumedToItsTop)
   EXPECT_EQ(j["edge"]["unmeasured"].get<size_t>(), 0u);
   // 8 % of the 30 % of the build laid short: over a millimetre at the top when resumed.
   EXPECT_GT(j["edge"]["shortfall_max_mm"].get<double>(), 1.0);
+  ASSERT_EQ(points, 16201u);  // 45 revolutions of 360 points and the closure point
+  // At 8,100 the generatrices carry 23 or 22 beads, of which the first 14 or 13
+  // were laid short (before point 4,860): 1 - 0.08 x (180 x 14/23 + 14/22 + 179 x 13/22) / 360.
+  const double counts = (180.0 * 14.0 / 23.0 + 14.0 / 22.0 + 179.0 * 13.0 / 22.0) / 360.0;
+  EXPECT_NEAR(j["process_index"]["mean"].get<double>(), 1.0 - 0.08 * counts, 0.002);
   EXPECT_LE(j["height_max"].get<double>(), j["h_max"].get<double>() + 1e-9);
   EXPECT_EQ(rowsOf(dir / "rest" / "trajectory.csv"), points - points / 2);
   EXPECT_NE(r.out.find("made up within"), std::string::npos) << r.out;

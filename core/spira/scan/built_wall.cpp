@@ -9,6 +9,7 @@
 
 #include "spira/base/error.h"
 #include "spira/base/units.h"
+#include "spira/scan/point_grid.h"
 
 namespace spira {
 namespace {
@@ -112,7 +113,10 @@ MeasuredEdge measureTopEdge(const Trajectory& plan, size_t at, const PointCloud&
   const double r = 0.5 * beadWidth;
   edge.shortfall.assign(edge.points.size(), NAN);
   edge.samples.assign(edge.points.size(), 0);
+  // Half a bead width: the line's neighbourhood spans a few cells, each with few points off it.
+  const PointGrid grid(scan.points, r);
   std::vector<double> tops;
+  std::vector<std::uint32_t> near;
   for (size_t e = 0; e < edge.points.size(); ++e) {
     const size_t i = edge.points[e];
     const TrajectoryPoint& p = plan.points[i];
@@ -122,12 +126,16 @@ MeasuredEdge measureTopEdge(const Trajectory& plan, size_t at, const PointCloud&
     const double step =
         0.5 * std::max(i + 1 < plan.size() ? (plan.points[i + 1].position - p.position).norm() : 0.0,
                        i > 0 ? (p.position - plan.points[i - 1].position).norm() : 0.0);
+    const double along = std::max(step, 0.25 * r);
     tops.clear();
-    // Any height along b: a wall far below the plan is still under its point.
-    for (const Vec3& q : scan.points) {
-      const Vec3 d = q - p.position;
+    near.clear();
+    // Any height along b: a wall far below the plan is still under its point. The grid hands over
+    // the points near that line; the test below is the one that decides.
+    grid.nearLine(p.position, b, std::hypot(0.5 * r, along), near);
+    for (const std::uint32_t k : near) {
+      const Vec3 d = scan.points[k] - p.position;
       const double across = d.dot(n);
-      if (std::abs(across) > 0.5 * r || std::abs(d.dot(t)) > std::max(step, 0.25 * r)) continue;
+      if (std::abs(across) > 0.5 * r || std::abs(d.dot(t)) > along) continue;
       // The crown's top above this sample, for a half circle of radius r.
       tops.push_back(d.dot(b) + r - std::sqrt(r * r - across * across));
     }

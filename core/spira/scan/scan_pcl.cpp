@@ -1,5 +1,5 @@
 // Everything of the scan area that uses PCL, in one translation unit (its templates are heavy):
-// filtering, normal estimation and ICP registration.
+// filtering, normal estimation, ICP registration and nearest-point queries.
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -12,6 +12,8 @@
 #include <pcl/point_types.h>
 #include <pcl/registration/icp.h>
 #include <pcl/search/kdtree.h>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
 
 #include "spira/base/error.h"
 #include "spira/base/number_text.h"
@@ -135,6 +137,30 @@ void estimateNormals(PointCloud& cloud, int neighbours, const Vec3& inside)
     if (n.dot(cloud.points[i] - inside) < 0.0) n = -n;
     cloud.normals[i] = n.normalized();
   }
+}
+
+std::vector<size_t> nearestPoints(const std::vector<Vec3>& points, const std::vector<Vec3>& queries)
+{
+  if (points.empty()) return {};
+  pcl::PointCloud<pcl::PointXYZ>::Ptr cloud(new pcl::PointCloud<pcl::PointXYZ>);
+  cloud->resize(points.size());
+  for (size_t i = 0; i < points.size(); ++i)
+    (*cloud)[i] = pcl::PointXYZ(float(points[i].x()), float(points[i].y()), float(points[i].z()));
+  pcl::search::KdTree<pcl::PointXYZ> tree;
+  tree.setInputCloud(cloud);
+  std::vector<size_t> out(queries.size(), 0);
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, queries.size()),
+                    [&](const tbb::blocked_range<size_t>& range) {
+                      std::vector<int> index(1);
+                      std::vector<float> squared(1);
+                      for (size_t q = range.begin(); q != range.end(); ++q) {
+                        const Vec3& v = queries[q];
+                        if (tree.nearestKSearch(pcl::PointXYZ(float(v.x()), float(v.y()), float(v.z())), 1,
+                                                index, squared) > 0)
+                          out[q] = size_t(index[0]);
+                      }
+                    });
+  return out;
 }
 
 AlignResult alignScan(const PointCloud& scan, const TriangleMesh& part, const Transform& T_initial,

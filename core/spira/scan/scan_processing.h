@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstddef>
+#include <vector>
 
 #include "spira/scan/point_cloud.h"
 
@@ -27,5 +28,10 @@ PointCloud filterScan(const PointCloud& cloud, const ScanFilterSettings& setting
 // away from the cloud's centroid axis through `inside` (a point inside the part: its normals then
 // point out of the material). Replaces any normals the cloud had.
 void estimateNormals(PointCloud& cloud, int neighbours, const Vec3& inside);
+
+// For each query, the index of the nearest of `points` (PCL's k-d tree, in single precision: ties
+// closer than a micrometre at part scale may go either way), queried in parallel. Empty `points`
+// give an empty answer.
+std::vector<size_t> nearestPoints(const std::vector<Vec3>& points, const std::vector<Vec3>& queries);
 
 }  // namespace spira
