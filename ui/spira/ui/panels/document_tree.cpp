@@ -5,6 +5,7 @@
 #include <QLocale>
 #include <QSet>
 
+#include "spira/base/units.h"
 #include "spira/document/document.h"
 #include "spira/mesh/mesh_report.h"
 #include "spira/pipeline/thermal_schema.h"
@@ -100,6 +101,21 @@ void fillSubstrate(QTreeWidget* tree, const Document& doc)
     QTreeWidgetItem* top = addTop(tree, QObject::tr("Substrate"), QString::fromStdString(s.meshName));
     if (s.mesh) addRow(top, QObject::tr("Triangles"), count(s.mesh->faceCount()));
   }
+}
+
+void fillScan(QTreeWidget* tree, const Document& doc)
+{
+  const auto& scan = doc.scan();
+  if (!scan) return;
+  QTreeWidgetItem* top =
+      addTop(tree, QObject::tr("Scan"), QFileInfo(QString::fromStdString(scan->file)).fileName());
+  addRow(
+      top, QObject::tr("Placed"),
+      QObject::tr("%1 mm, %2°")
+          .arg(QLocale().toString(scan->T_part_scan.translation().norm(), 'f', 3),
+               QLocale().toString(radToDeg(Eigen::AngleAxisd(scan->T_part_scan.linear()).angle()), 'f', 3)));
+  addRow(top, QObject::tr("Residual"), mm(scan->rmsMm));
+  if (scan->depositedTo > 0) addRow(top, QObject::tr("Taken at point"), count(scan->depositedTo));
 }
 
 void fillCell(QTreeWidget* tree, const Document& doc)
@@ -200,6 +216,7 @@ void DocumentTree::refresh(const Document& doc, const MeshReport* partReport)
   clear();
   fillPart(this, doc, partReport);
   fillSubstrate(this, doc);
+  fillScan(this, doc);
   fillCell(this, doc);
   fillSettings(this, doc);
   fillResults(this, doc);

@@ -304,7 +304,7 @@ void MainWindow::onDocumentChanged(const ChangeSet& changes)
   if (part || changes.has(Change::Substrate)) refreshScene(part);
   if (part || changes.has(Change::Results)) refreshResults();
   if (part || changes.has(Change::Substrate) || changes.has(Change::Cell) || changes.has(Change::Settings) ||
-      changes.has(Change::Results)) {
+      changes.has(Change::Results) || changes.has(Change::Scan)) {
     refreshTree();
   }
   if (part) refreshStatus();

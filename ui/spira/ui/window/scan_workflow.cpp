@@ -15,7 +15,9 @@
 #include "spira/base/units.h"
 #include "spira/document/plan_report.h"
 #include "spira/planning/plan_schemas.h"
+#include "spira/planning/solid_wall.h"
 #include "spira/scan/pair_alignment.h"
+#include "spira/scan/quality_indices.h"
 #include "spira/scan/scan_alignment.h"
 #include "spira/scan/scan_deviation.h"
 #include "spira/scan/scan_processing.h"
@@ -53,6 +55,20 @@ namespace {
 
 // Hand-picked places are a few tenths of a millimetre off; several millimetres means another place.
 constexpr double kPairToleranceMm = 5.0;
+
+QString indexText(const QString& name, const IndexStats& s)
+{
+  const QLocale loc;
+  if (s.count == 0) return QObject::tr("%1 not measured").arg(name);
+  return QObject::tr("%1 %2 (min %3)").arg(name, loc.toString(s.mean, 'f', 3), loc.toString(s.min, 'f', 3));
+}
+
+QString indicesText(const IndexStats& trajectory, const IndexStats& process, const IndexStats& global)
+{
+  return QObject::tr("%1, %2, %3.")
+      .arg(indexText(QObject::tr("trajectory"), trajectory), indexText(QObject::tr("process"), process),
+           indexText(QObject::tr("global"), global));
+}
 
 QString movedText(const Transform& T)
 {
@@ -454,15 +470,30 @@ bool ScanWorkflow::resumeFromScan(size_t at, double beadWidthMm)
   settings.hMax = window->hMax;
   settings.process = processSettingsFrom(p_.doc.settings()->section(PlanSettings::kProcessSection));
   settings.process.beadWidth = beadWidthMm;
-  auto result = std::make_shared<Resumed>();
+  struct Outcome {
+    Resumed resumed;
+    IndexStats trajectory, process, global;
+  };
+  auto result = std::make_shared<Outcome>();
+  const std::optional<PlanReportSummary> summary = planSummaryOf(r);
+  const bool solid = summary && summary->solidWall;
   p_.tasks.start(
       tr("Resuming from the scan"),
-      [plan, shown, settings, at, beadWidthMm, result](Progress& progress) {
+      [plan, shown, settings, at, beadWidthMm, result, solid](Progress& progress) {
         progress.report(0.1, "measuring the top edge");
         const MeasuredEdge edge = measureTopEdge(*plan, at, shown->aligned, beadWidthMm);
         progress.checkCancel();
-        progress.report(0.6, "re-planning");
-        *result = resumeFromEdge(*plan, at, edge, settings);
+        progress.report(0.4, "re-planning");
+        result->resumed = resumeFromEdge(*plan, at, edge, settings);
+        progress.report(0.6, "quality indices");
+        // A solid's plan runs on its wall's mid-surface: its trajectory index is measured there.
+        const std::unique_ptr<TriangleMesh> mid =
+            solid ? std::make_unique<TriangleMesh>(
+                        *plannableMidSurface(*shown->mesh, beadWidthMm).wall.midSurface)
+                  : nullptr;
+        result->trajectory = indexStats(trajectoryIndex(*plan, at, MeshDistance(mid ? *mid : *shown->mesh)));
+        result->process = indexStats(processIndex(*plan, edge));
+        result->global = indexStats(globalIndex(*plan, at, shown->aligned, shown->deviation));
       },
       [this, result, at, plan, window = *window](const TaskOutcome& outcome) {
         if (!outcome.succeeded()) {
@@ -472,19 +503,24 @@ bool ScanWorkflow::resumeFromScan(size_t at, double beadWidthMm)
           return;
         }
         const auto part = p_.doc.part();
-        continuation_->setContinuation(result->continuation, window.hMin - window.tolerance,
+        const Resumed& done = result->resumed;
+        continuation_->setContinuation(done.continuation, window.hMin - window.tolerance,
                                        window.hMax + window.tolerance,
                                        part ? part->T_world_part : Transform::Identity());
         if (p_.showBuildUpTo) p_.showBuildUpTo(plan->points[at - 1].revolution);
-        const ResumeReport& rep = result->report;
+        const ResumeReport& rep = done.report;
         const QLocale loc;
-        const QString summary =
+        const QString text =
             tr("<b>Continuation</b> from point %1 (drawn thick, the plan shown as built so far): %2 points, "
-               "the "
-               "arc restarting at the orange dot.<br>%3")
-                .arg(loc.toString(qulonglong(at)), loc.toString(qulonglong(result->continuation.size())),
-                     QString::fromStdString(rep.summary()).toHtmlEscaped());
-        panel_->showContinuation(summary);
+               "the arc restarting at the orange dot.<br>%3")
+                .arg(loc.toString(qulonglong(at)), loc.toString(qulonglong(done.continuation.size())),
+                     QString::fromStdString(rep.summary()).toHtmlEscaped()) +
+            tr("<br>Quality indices of the build so far (1: as planned; 0.92: off by 8 % of a bead): %1")
+                .arg(indicesText(result->trajectory, result->process, result->global));
+        panel_->showContinuation(text);
+        p_.log.info(tr("Quality indices of the build to point %1: %2")
+                        .arg(at)
+                        .arg(indicesText(result->trajectory, result->process, result->global)));
         if (rep.reachesTop())
           p_.log.info(tr("Resumed from point %1: %2").arg(at).arg(QString::fromStdString(rep.summary())));
         else
