@@ -48,7 +48,9 @@ CompareQuality compareQuality(const PlanFolder& plan, size_t at, const TriangleM
     // A scan of the part's lower half still has a trajectory and a global index to give.
     q.edgeMissing = e.what();
   }
-  q.global = globalIndex(plan.trajectory, at, scan, deviation);
+  const std::vector<size_t> nearest = nearestDeposited(plan.trajectory, at, scan);
+  q.global = globalIndex(plan.trajectory, nearest, deviation);
+  q.deviationAlongPlan = deviationAlongPlan(at, nearest, deviation);
   return q;
 }
 
@@ -56,7 +58,7 @@ std::string qualityCsv(const Trajectory& plan, const CompareQuality& q)
 {
   std::vector<double> process(q.at, NAN);
   for (size_t e = 0; e < q.process.size(); ++e) process[q.edge.points[e]] = q.process[e];
-  std::string out = "index,x,y,z,h_mm,trajectory_index,process_index\n";
+  std::string out = "index,x,y,z,h_mm,trajectory_index,process_index,scan_deviation_mm\n";
   out.reserve(out.size() + q.at * 80);
   for (size_t i = 0; i < q.at; ++i) {
     if (std::isnan(q.trajectory[i])) continue;
@@ -68,6 +70,8 @@ std::string qualityCsv(const Trajectory& plan, const CompareQuality& q)
     }
     out += ',';
     if (!std::isnan(process[i])) appendNumber(out, process[i]);
+    out += ',';
+    if (!std::isnan(q.deviationAlongPlan[i])) appendNumber(out, q.deviationAlongPlan[i]);
     out += '\n';
   }
   return out;

@@ -17,11 +17,12 @@ nlohmann::json indexStatsJson(const IndexStats& s);  // {count, mean, min, below
 // --plan --at): the plan, the part and the scan in the plan's frame.
 struct CompareQuality {
   size_t at = 0;
-  std::vector<double> trajectory;  // per plan point before `at`, NaN for none
-  MeasuredEdge edge;               // empty when the scan covers none of the top edge
-  std::vector<double> process;     // per edge.points
-  std::vector<double> global;      // per scan point
-  std::string edgeMissing;         // why there is no process index, if there is none
+  std::vector<double> trajectory;          // per plan point before `at`, NaN for none
+  MeasuredEdge edge;                       // empty when the scan covers none of the top edge
+  std::vector<double> process;             // per edge.points
+  std::vector<double> global;              // per scan point
+  std::vector<double> deviationAlongPlan;  // per plan point before at: the mean deviation of its scan points
+  std::string edgeMissing;                 // why there is no process index, if there is none
 };
 
 // `part` the part as the plan placed it. A thin-walled solid's plan runs on its mid-surface, so the

@@ -70,24 +70,50 @@ std::vector<double> processIndex(const Trajectory& plan, const MeasuredEdge& edg
   return out;
 }
 
-std::vector<double> globalIndex(const Trajectory& plan, size_t at, const PointCloud& scan,
-                                const std::vector<double>& deviation)
+std::vector<size_t> nearestDeposited(const Trajectory& plan, size_t at, const PointCloud& scan)
 {
-  if (deviation.size() != scan.size()) throw InternalError("a deviation for each scan point is needed");
   std::vector<Vec3> laid;
-  std::vector<double> height;
+  std::vector<size_t> index;
   for (size_t i = 0; i < std::min(at, plan.size()); ++i)
     if (deposited(plan.points[i])) {
       laid.push_back(plan.points[i].position);
-      height.push_back(plan.points[i].height);
+      index.push_back(i);
     }
   if (laid.empty())
     throw InputError("no point of the plan before point " + std::to_string(at) + " deposits anything",
                      "give the number of points deposited when the scan was taken (--at)");
-  const std::vector<size_t> nearest = nearestPoints(laid, scan.points);
-  std::vector<double> out(scan.size());
-  for (size_t k = 0; k < scan.size(); ++k) out[k] = qualityIndex(deviation[k], height[nearest[k]]);
+  std::vector<size_t> nearest = nearestPoints(laid, scan.points);
+  for (size_t& n : nearest) n = index[n];
+  return nearest;
+}
+
+std::vector<double> globalIndex(const Trajectory& plan, const std::vector<size_t>& nearest,
+                                const std::vector<double>& deviation)
+{
+  if (deviation.size() != nearest.size()) throw InternalError("a deviation for each scan point is needed");
+  std::vector<double> out(nearest.size());
+  for (size_t k = 0; k < nearest.size(); ++k)
+    out[k] = qualityIndex(deviation[k], plan.points[nearest[k]].height);
   return out;
+}
+
+std::vector<double> globalIndex(const Trajectory& plan, size_t at, const PointCloud& scan,
+                                const std::vector<double>& deviation)
+{
+  if (deviation.size() != scan.size()) throw InternalError("a deviation for each scan point is needed");
+  return globalIndex(plan, nearestDeposited(plan, at, scan), deviation);
+}
+
+std::vector<double> deviationAlongPlan(size_t at, const std::vector<size_t>& nearest,
+                                       const std::vector<double>& deviation)
+{
+  if (deviation.size() != nearest.size()) throw InternalError("a deviation for each scan point is needed");
+  std::vector<double> sum(at, 0.0);
+  std::vector<size_t> count(at, 0);
+  for (size_t k = 0; k < nearest.size(); ++k)
+    if (nearest[k] < at) sum[nearest[k]] += deviation[k], ++count[nearest[k]];
+  for (size_t i = 0; i < at; ++i) sum[i] = count[i] > 0 ? sum[i] / double(count[i]) : NAN;
+  return sum;
 }
 
 }  // namespace spira

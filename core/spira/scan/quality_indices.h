@@ -52,4 +52,16 @@ std::vector<double> processIndex(const Trajectory& plan, const MeasuredEdge& edg
 std::vector<double> globalIndex(const Trajectory& plan, size_t at, const PointCloud& scan,
                                 const std::vector<double>& deviation);
 
+// For each scan point, the index in `plan` of the deposited point before `at` nearest to it (PCL's
+// k-d tree). Throws InputError when nothing was deposited before `at`.
+std::vector<size_t> nearestDeposited(const Trajectory& plan, size_t at, const PointCloud& scan);
+// I_g from those: the same values as globalIndex, without searching again.
+std::vector<double> globalIndex(const Trajectory& plan, const std::vector<size_t>& nearest,
+                                const std::vector<double>& deviation);
+
+// The scan's deviation seen along the path: for each plan point before `at`, the mean signed deviation
+// (mm) of the scan points nearest to it; NaN where none is.
+std::vector<double> deviationAlongPlan(size_t at, const std::vector<size_t>& nearest,
+                                       const std::vector<double>& deviation);
+
 }  // namespace spira
