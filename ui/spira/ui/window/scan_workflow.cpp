@@ -257,9 +257,13 @@ bool ScanWorkflow::compareFile(const QString& path)
 
 void ScanWorkflow::onDocumentChanged(const ChangeSet& changes)
 {
-  if (changes.has(Change::Results) || changes.has(Change::Part)) {
+  // The continuation belongs to the plan it was made from: a new plan (or part) drops it, a later stage
+  // of the same plan (the robot's motion solved afterwards) does not.
+  if (continuation_->hasContinuation() &&
+      (changes.has(Change::Part) || p_.doc.results().process != continuationPlan_)) {
     continuation_->clear();
     panel_->showContinuation({});
+    continuationPlan_.reset();
   }
   if (changes.has(Change::Scan) || changes.has(Change::Part)) {
     const auto& record = p_.doc.scan();
@@ -507,6 +511,7 @@ bool ScanWorkflow::resumeFromScan(size_t at, double beadWidthMm)
         continuation_->setContinuation(done.continuation, window.hMin - window.tolerance,
                                        window.hMax + window.tolerance,
                                        part ? part->T_world_part : Transform::Identity());
+        continuationPlan_ = plan;
         if (p_.showBuildUpTo) p_.showBuildUpTo(plan->points[at - 1].revolution);
         const ResumeReport& rep = done.report;
         const QLocale loc;

@@ -15,6 +15,7 @@ class QMainWindow;
 
 namespace spira {
 class PluginRegistry;
+struct Trajectory;
 }  // namespace spira
 
 namespace spira::ui {
@@ -89,8 +90,9 @@ class ScanWorkflow : public QObject {
   std::unique_ptr<PairPicker> picker_;
   std::unique_ptr<ContinuationLayer> continuation_;
   Document::SubscriptionId subscription_ = 0;
-  std::shared_ptr<const Loaded> loaded_;  // the cleaned scan in its own frame
-  std::shared_ptr<const Shown> shown_;    // its comparison for a record
+  std::shared_ptr<const Loaded> loaded_;                // the cleaned scan in its own frame
+  std::shared_ptr<const Shown> shown_;                  // its comparison for a record
+  std::shared_ptr<const Trajectory> continuationPlan_;  // the plan the continuation was made from
   bool reloadPending_ = false;
   bool unplaced_ = false;  // the view shows loaded_ where it lies, waiting for picked pairs
 };
