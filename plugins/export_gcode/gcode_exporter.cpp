@@ -29,6 +29,13 @@ ParamSchema makeSchema()
                             "and offsets, limits, feeds and the process codes (docs/machine-format.md; "
                             "resources/machines/ has an example).",
                             "Machine"}));
+  defs.push_back(numberParam(
+      "upright_tolerance", 0.0, 0.0, 5.0, "deg",
+      {"Upright tolerance",
+       "A torch axis leaning less than this from the head's zero direction is written at zero tilt, the "
+       "turning axis kept where it is. A spiral's slight lean (its pitch) would otherwise turn that axis "
+       "once per revolution; 0 follows the plan exactly.",
+       "Machine"}));
   defs.push_back(
       programNameParam("spira_part", "Letters, digits and '_', at most 32, starting with a letter."));
   defs.push_back(intParam("program_number", 1000, 0, 9999, "Program number",
@@ -124,8 +131,9 @@ ExportResult GcodeExporter::write(const ExportInput& input, const ParamSet& para
   if (path.hasApproach) add(path.approach);
   for (const ExportPoint& p : path.points) add(p.pose);
   if (path.hasApproach) add(path.retract);
-  const std::vector<HeadAxes> axes =
-      solveHeadPath(machine, poses, [&path](size_t i) { return pointName(path, i); });
+  const std::vector<HeadAxes> axes = solveHeadPath(
+      machine, poses, [&path](size_t i) { return pointName(path, i); },
+      values.getDouble("upright_tolerance"));
   GcodeTargets targets;
   const size_t first = path.hasApproach ? 1 : 0;
   targets.points.assign(axes.begin() + static_cast<std::ptrdiff_t>(first),

@@ -99,12 +99,17 @@ Vec3 headLinear(const GcodeMachine& m, const Vec3& tip, const std::array<double,
 }
 
 std::vector<HeadAxes> solveHeadPath(const GcodeMachine& m, const std::vector<HeadPose>& poses,
-                                    const std::function<std::string(size_t)>& poseName)
+                                    const std::function<std::string(size_t)>& poseName,
+                                    double uprightToleranceDeg)
 {
+  const double uprightCos = std::cos(degToRad(uprightToleranceDeg));
   std::vector<HeadAxes> out(poses.size());
   std::array<double, 2> previous{0.0, 0.0};  // the first pose takes the branch nearest home
   for (size_t i = 0; i < poses.size(); ++i) {
-    const HeadPose& pose = poses[i];
+    HeadPose pose = poses[i];
+    pose.axis.normalize();
+    if (uprightToleranceDeg > 0.0 && pose.axis.dot(m.toolDirection) >= uprightCos)
+      pose.axis = m.toolDirection;
     const auto branches = headOrientations(m, pose.axis, previous[0]);
     if (branches.empty())
       throw InputError(

@@ -40,8 +40,11 @@ Vec3 headLinear(const GcodeMachine& m, const Vec3& tip, const std::array<double,
 // machine's shifted to m.partOrigin): per pose the branch and the turn of each rotary axis (multiples
 // of 360 deg) nearest the previous pose's, within the limits, so the head never flips and a rotary
 // axis turning round keeps counting (unwrapped). Throws InputError naming the pose (`poseName` of
-// its position in the list) and the axis when no solution lies within the limits.
+// its position in the list) and the axis when no solution lies within the limits. A torch axis within
+// `uprightToleranceDeg` of the head's zero direction is taken as that direction (the first rotary
+// axis then keeps its angle): a spiral's slight lean would otherwise turn it once per revolution.
 std::vector<HeadAxes> solveHeadPath(const GcodeMachine& m, const std::vector<HeadPose>& poses,
-                                    const std::function<std::string(size_t)>& poseName);
+                                    const std::function<std::string(size_t)>& poseName,
+                                    double uprightToleranceDeg = 0.0);
 
 }  // namespace spira

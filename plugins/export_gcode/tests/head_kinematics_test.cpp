@@ -140,6 +140,28 @@ TEST(HeadKinematics, CUnwrapsRoundAndAKeepsItsSignThroughTheVertical)
   }
 }
 
+TEST(HeadKinematics, AnUprightToleranceHoldsASlightLeanAtZeroTilt)
+{
+  const GcodeMachine m = bundledMachine();
+  const double lean = degToRad(0.5);
+  std::vector<HeadPose> poses;
+  for (int i = 0; i < 8; ++i) {
+    const double phi = degToRad(45.0 * i);
+    poses.push_back({Vec3::Zero(),
+                     Vec3(std::sin(lean) * std::cos(phi), std::sin(lean) * std::sin(phi), -std::cos(lean))});
+  }
+  const std::vector<HeadAxes> exact = solveHeadPath(m, poses, name);
+  EXPECT_NEAR(std::abs(exact[3].rotaryDeg[1]), 0.5, 1e-9);
+  EXPECT_NEAR(exact[3].rotaryDeg[0] - exact[0].rotaryDeg[0], 135.0, 1e-9);
+  const std::vector<HeadAxes> upright = solveHeadPath(m, poses, name, 1.0);
+  for (const HeadAxes& a : upright) {
+    EXPECT_EQ(a.rotaryDeg[0], 0.0);
+    EXPECT_EQ(a.rotaryDeg[1], 0.0);
+  }
+  // 0.4 deg is beyond a 0.3 deg tolerance: followed exactly.
+  EXPECT_NEAR(std::abs(solveHeadPath(m, poses, name, 0.4)[0].rotaryDeg[1]), 0.5, 1e-9);
+}
+
 TEST(HeadKinematics, PosesOutsideTheLimitsAreRefusedWithThePointAndTheAxis)
 {
   const GcodeMachine m = bundledMachine();
