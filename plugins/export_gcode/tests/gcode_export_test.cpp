@@ -12,6 +12,8 @@
 #include "gcode_reader.h"
 #include "spira/base/error.h"
 #include "spira/base/units.h"
+#include "spira/export/export_path.h"
+#include "spira/path/dwell.h"
 #include "support/test_support.h"
 
 namespace spira {
@@ -154,6 +156,64 @@ TEST(GcodeExport, EachSubPathHasOneArcOnAndOneArcOffWithTheTravelBetweenThem)
     const bool burning = (i >= 1 && i <= 12) || i >= 16;  // a move burns when it ends an arc's move
     EXPECT_EQ(run.moves[i + 1].arcOn, burning) << i;
   }
+}
+
+TEST(GcodeExport, ADwellPutsTheArcOutWaitsAndStrikesAgain)
+{
+  test::TempDir dir;
+  Trajectory plan = leaningPlan(2, 12);
+  // Point 12 is a dwell's lift: arc off, 7.5 s wait; the arc strikes again at 13.
+  plan.points[12].arcOn = false;
+  plan.extra[kDwellChannel] = std::vector<double>(plan.size(), 0.0);
+  plan.extra[kDwellChannel][12] = 7.5;
+  const ExportResult result = test::runExporter("export.gcode", plan, nullptr, params(), dir.path());
+  const test::GcodeRun run = runProgram(result.files[0]);
+  ASSERT_EQ(run.dwells, std::vector<double>{7.5});
+  std::vector<std::string> process;
+  for (const auto& e : run.events)
+    if (e != "move" && e != "wire feed") process.push_back(e);
+  EXPECT_EQ(process, (std::vector<std::string>{"arc on", "arc off", "dwell", "arc on", "arc off"}));
+  // The wait comes once the torch reached the lift (move 13: the approach is move 0).
+  size_t moves = 0;
+  for (const auto& e : run.events) {
+    if (e == "dwell") break;
+    moves += e == "move";
+  }
+  EXPECT_EQ(moves, 14u);
+}
+
+TEST(GcodeExport, ALedWireFeedIsWrittenOnTheMoveDuringWhichItIsDue)
+{
+  test::TempDir dir;
+  Trajectory plan = leaningPlan(2, 12);
+  // A command that steps by 0.5 m/min (30 mm/min) at every point, due 5 s (about two moves) ahead of it.
+  std::vector<double> command(plan.size()), lead(plan.size(), 5.0);
+  for (size_t i = 0; i < plan.size(); ++i) command[i] = 40.0 + 10.0 * static_cast<double>(i % 2);
+  plan.extra[kWfsCommandChannel] = command;
+  plan.extra[kWfsLeadChannel] = lead;
+  ParamSet p = params();
+  p.set("wfs_deadband", 0.0);
+  const ExportResult result = test::runExporter("export.gcode", plan, nullptr, p, dir.path());
+  const test::GcodeRun run = runProgram(result.files[0]);
+  // Move times from the plan; point k's setpoint is due at t_k - 5 s, which lies in the move from
+  // point j to j+1 with t_j <= due < t_j+1; so the value in force during that move is point k's
+  // (the later of two due in one move wins).
+  std::vector<double> t(plan.size(), 0.0);
+  for (size_t i = 1; i < plan.size(); ++i)
+    t[i] = t[i - 1] +
+           (plan.points[i].position - plan.points[i - 1].position).norm() / plan.points[i].travelSpeed;
+  size_t checked = 0;
+  for (size_t j = 0; j + 1 < plan.size(); ++j) {
+    size_t due = SIZE_MAX;
+    for (size_t k = 1; k < plan.size(); ++k)
+      if (t[k] - 5.0 >= t[j] && t[k] - 5.0 < t[j + 1]) due = k;
+    if (due == SIZE_MAX) continue;
+    EXPECT_NEAR(run.moves[j + 2].wireFeed, command[due] * 0.06, 1e-4) << "move into point " << j + 1;
+    ++checked;
+  }
+  EXPECT_GT(checked, 10u);
+  // Point 0's setpoint before the arc strikes.
+  EXPECT_NEAR(run.wireFeeds.front(), command[0] * 0.06, 1e-4);
 }
 
 TEST(GcodeExport, MissingOrBadMachinesAndFastMovesAreRefused)
