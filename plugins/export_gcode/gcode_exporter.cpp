@@ -37,7 +37,11 @@ ParamSchema makeSchema()
        "once per revolution; 0 follows the plan exactly.",
        "Machine"}));
   defs.push_back(
-      programNameParam("spira_part", "Letters, digits and '_', at most 32, starting with a letter."));
+      textParam("program_name", "spira_part",
+                {"Program name",
+                 "Name of the program file (NAME.nc): letters, digits and '_', at most 32, starting "
+                 "with a letter; other characters become '_'.",
+                 "Program"}));
   defs.push_back(intParam("program_number", 1000, 0, 9999, "Program number",
                           "The O-word of the program (O1000); 0 writes none.", "Program"));
   defs.push_back(intParam("decimals", 3, 1, 6, "Decimal places",

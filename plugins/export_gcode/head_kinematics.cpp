@@ -145,8 +145,8 @@ std::vector<HeadAxes> solveHeadPath(const GcodeMachine& m, const std::vector<Hea
     if (!best)
       throw InputError(
           poseName(i) + ": the torch axis " + vecText(pose.axis.normalized()) + " needs " + refusal,
-          "widen the axis' limits in the machine file if the head allows it, or tilt the torch "
-          "less (the plan's build direction or tool tilt)");
+          "widen the axis' limits in the machine file if the head allows it, tilt the torch less (the "
+          "plan's build direction or tool tilt), or hold a slight lean upright (upright_tolerance)");
     HeadAxes& axes = out[i];
     axes.rotaryDeg = *best;
     axes.linear = headLinear(m, pose.tip + m.partOrigin, *best);
