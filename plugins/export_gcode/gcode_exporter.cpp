@@ -49,6 +49,13 @@ ParamSchema makeSchema()
   defs.push_back(flagParam(
       "line_numbers", false,
       {"Line numbers", "Number every block N1, N2... (comments and % are not numbered).", "Program"}));
+  defs.push_back(choiceParam(
+      "feed_mode", "mm_per_min", {"mm_per_min", "inverse_time"},
+      {"Feed mode",
+       "mm_per_min (G94): F is the plan's travel speed of the tool tip, for a controller with tool-tip "
+       "control. inverse_time (G93): F is 1 / each move's planned duration in minutes, so a controller "
+       "without it still runs every move in the planned time while the head turns.",
+       "Motion"}));
   defs.push_back(approachDistanceParam());
   defs.push_back(approachSpeedParam(1000.0));
   defs.push_back(wfsDeadbandParam());
@@ -127,6 +134,7 @@ ExportResult GcodeExporter::write(const ExportInput& input, const ParamSet& para
   s.lineNumbers = values.getBool("line_numbers");
   s.programNumber = static_cast<int>(values.getInt("program_number"));
   s.approachFeed = options.approachSpeed * 60.0;
+  s.inverseTime = values.getString("feed_mode") == "inverse_time";
   checkFeeds(path, machine, s.approachFeed);
 
   std::vector<HeadPose> poses;
@@ -163,7 +171,8 @@ ExportResult GcodeExporter::write(const ExportInput& input, const ParamSet& para
   settings.emplace_back(
       "targets", "machine coordinates, part origin at X" + roundedText(machine.partOrigin.x(), 3) + " Y" +
                      roundedText(machine.partOrigin.y(), 3) + " Z" + roundedText(machine.partOrigin.z(), 3));
-  settings.emplace_back("feed", "mm/min, G94; wire feed " + machine.wireFeedUnit);
+  settings.emplace_back("feed", std::string(s.inverseTime ? "inverse time, G93" : "mm/min, G94") +
+                                    "; wire feed " + machine.wireFeedUnit);
   if (path.arcCount > 1) settings.emplace_back("sub-paths", std::to_string(path.arcCount) + " arcs");
   // The machine file stands for the cell, whatever cell the plan was made with.
   std::map<std::string, std::string> names = input.header;

@@ -1,5 +1,6 @@
 #include "gcode_program.h"
 
+#include <algorithm>
 #include <map>
 
 #include "spira/export/fixed_number.h"
@@ -11,6 +12,10 @@ namespace {
 
 constexpr size_t kCommentWidth = 72;
 constexpr int kFeedDecimals = 1;
+// A move planned shorter than this (a repeated point) is given this duration: F stays finite.
+constexpr double kShortestMoveS = 1e-3;
+// Inverse-time feeds are small numbers (a 3 s move is F20): three places keep them within 0.01 %.
+constexpr int kInverseTimeDecimals = 3;
 
 std::string filled(const std::string& templ, const std::string& placeholder, const std::string& value)
 {
@@ -59,8 +64,9 @@ class Writer {
     for (size_t k = 0; k < 2; ++k) word(line, m_.rotary[k].letter, a.rotaryDeg[k]);
     if (feed > 0.0) {
       std::string f;
-      appendFixed(f, feed, kFeedDecimals);
-      if (f != feed_) {
+      appendFixed(f, feed, s_.inverseTime ? kInverseTimeDecimals : kFeedDecimals);
+      // In G93 every G1 must carry its F.
+      if (f != feed_ || s_.inverseTime) {
         line += " F" + f;
         feed_ = f;
       }
@@ -122,6 +128,20 @@ std::map<size_t, double> wireFeedSlots(const ExportPath& path)
   return slots;
 }
 
+// The F of a path move: its planned speed, or in inverse time its planned duration.
+double feedOf(const GcodeSettings& s, const ExportPoint& p)
+{
+  if (!s.inverseTime) return p.speed * 60.0;
+  return 60.0 / std::max(p.moveTime, kShortestMoveS);
+}
+
+// The F of an approach or retract move from `a` to `b` at the approach speed.
+double approachFeedOf(const GcodeSettings& s, const Vec3& a, const Vec3& b)
+{
+  if (!s.inverseTime) return s.approachFeed;
+  return s.approachFeed / std::max((b - a).norm(), s.approachFeed * kShortestMoveS / 60.0);
+}
+
 }  // namespace
 
 double wireFeedInUnit(double wfsMmPerS, const std::string& unit)
@@ -140,7 +160,7 @@ std::string writeGcodeProgram(const ExportPath& path, const GcodeTargets& target
   out.raw("%");
   if (s.programNumber > 0) out.raw("O" + std::to_string(s.programNumber));
   for (const std::string& line : header) out.comment(line);
-  out.block("G21 G90 G94");
+  out.block(s.inverseTime ? "G21 G90 G93" : "G21 G90 G94");
   const size_t n = path.points.size();
   w.move("G0", path.hasApproach ? targets.approach : targets.points.front(), 0.0);
   const std::map<size_t, double> slots = wireFeedSlots(path);
@@ -150,7 +170,10 @@ std::string writeGcodeProgram(const ExportPath& path, const GcodeTargets& target
       progress.report(0.5 + 0.4 * static_cast<double>(i) / static_cast<double>(n), "writing the program");
     }
     const ExportPoint& p = path.points[i];
-    if (i > 0 || path.hasApproach) w.move("G1", targets.points[i], i == 0 ? s.approachFeed : p.speed * 60.0);
+    if (i > 0 || path.hasApproach) {
+      const Vec3 from = i > 0 ? path.points[i - 1].pose.translation() : path.approach.translation();
+      w.move("G1", targets.points[i], i == 0 ? approachFeedOf(s, from, p.pose.translation()) : feedOf(s, p));
+    }
     if (p.stop) out.block(m.arcOff);
     if (p.dwell > 0.0) w.dwell(p.dwell);
     if (p.strike) {
@@ -160,7 +183,9 @@ std::string writeGcodeProgram(const ExportPath& path, const GcodeTargets& target
     const auto slot = slots.find(i);
     if (slot != slots.end()) w.wireFeed(slot->second);
   }
-  if (path.hasApproach) w.move("G1", targets.retract, s.approachFeed);
+  if (path.hasApproach)
+    w.move("G1", targets.retract,
+           approachFeedOf(s, path.points.back().pose.translation(), path.retract.translation()));
   out.block(m.programEnd);
   out.raw("%");
   return std::move(out.text());

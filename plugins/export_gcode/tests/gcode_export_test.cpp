@@ -158,6 +158,33 @@ TEST(GcodeExport, EachSubPathHasOneArcOnAndOneArcOffWithTheTravelBetweenThem)
   }
 }
 
+TEST(GcodeExport, InverseTimeFeedsAreOneOverEachMovesPlannedMinutes)
+{
+  test::TempDir dir;
+  const Trajectory plan = leaningPlan(2, 12);
+  ParamSet p = params();
+  p.set("feed_mode", std::string("inverse_time"));
+  const ExportResult result = test::runExporter("export.gcode", plan, nullptr, p, dir.path());
+  const std::string text = test::readBytes(result.files[0]);
+  EXPECT_NE(text.find("\nG21 G90 G93\n"), std::string::npos);
+  size_t g1 = 0, withF = 0;
+  for (size_t at = text.find("\nG1 "); at != std::string::npos; at = text.find("\nG1 ", at + 1)) {
+    ++g1;
+    withF += text.substr(at, text.find('\n', at + 1) - at).find(" F") != std::string::npos;
+  }
+  EXPECT_EQ(g1, plan.size() + 1);
+  EXPECT_EQ(withF, g1);  // G93 needs F on every move
+  const test::GcodeRun run = runProgram(result.files[0]);
+  ASSERT_EQ(run.moves.size(), plan.size() + 2);
+  // The approach: 20 mm at 20 mm/s is 1 s, F = 60 per minute.
+  EXPECT_NEAR(run.moves[1].feed, 60.0, 0.0005 + 1e-9);
+  for (size_t i = 1; i < plan.size(); ++i) {
+    const double minutes =
+        (plan.points[i].position - plan.points[i - 1].position).norm() / plan.points[i].travelSpeed / 60.0;
+    EXPECT_NEAR(run.moves[i + 1].feed, 1.0 / minutes, 0.0005 + 1e-9) << i;
+  }
+}
+
 TEST(GcodeExport, ADwellPutsTheArcOutWaitsAndStrikesAgain)
 {
   test::TempDir dir;
