@@ -1,13 +1,15 @@
 // Export speed: a 100,000-point spiral (200 revolutions of 500 points on a 50 mm cylinder, a
 // solved cell with a positioner) written as KUKA KRL and FANUC TP, as single programs and split
 // at the default points per file. Times are for the whole ExporterPlugin::write(): checks,
-// angle conversion, text and the synced, atomic file writes. Target: < 1 s each.
+// angle conversion (the head's inverse kinematics for G-code), text and the synced, atomic file
+// writes. Target: < 1 s each.
 #include <unistd.h>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <string>
 #include <vector>
 
@@ -71,7 +73,7 @@ uintmax_t folderBytes(const fs::path& dir, size_t& count)
   return bytes;
 }
 
-void run(const char* label, const std::string& id, const Trajectory& plan, const JointTrajectory& joints,
+void run(const char* label, const std::string& id, const Trajectory& plan, const JointTrajectory* joints,
          const ParamSet& params)
 {
   const fs::path dir = fs::temp_directory_path() / ("spira-bench-export-" + std::to_string(::getpid()));
@@ -82,7 +84,7 @@ void run(const char* label, const std::string& id, const Trajectory& plan, const
     fs::remove_all(dir);
     fs::create_directories(dir);
     NullProgress progress;
-    ExportInput input{plan, &joints, {{"part", "bench spiral"}, {"date", "2024-05-01"}}};
+    ExportInput input{plan, joints, {{"part", "bench spiral"}, {"date", "2024-05-01"}}};
     const auto t0 = std::chrono::steady_clock::now();
     builtinRegistry().exporter(id).write(input, params, dir, progress);
     times.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
@@ -92,6 +94,29 @@ void run(const char* label, const std::string& id, const Trajectory& plan, const
   std::sort(times.begin(), times.end());
   std::printf("%-34s %8zu points  %3zu files  %6.1f MB   best %6.3f s  median %6.3f s\n", label, plan.size(),
               files, static_cast<double>(bytes) / 1e6, times.front(), times[times.size() / 2]);
+}
+
+void run(const char* label, const std::string& id, const Trajectory& plan, const JointTrajectory& joints,
+         const ParamSet& params)
+{
+  run(label, id, plan, &joints, params);
+}
+
+// G-code has no cell: the head of resources/machines/gantry_ca_head.machine, its C axis unlimited so
+// that the exact torch axis (a slight lean turning with the spiral) can be followed over 200 turns.
+ParamSet gcodeParams(double uprightDeg)
+{
+  const fs::path file =
+      fs::temp_directory_path() / ("spira-bench-" + std::to_string(::getpid()) + ".machine");
+  std::ofstream(file) << R"({"spira_machine": 1, "linear_axes": [{"min_mm": -1000, "max_mm": 1000},
+    {"min_mm": -1000, "max_mm": 1000}, {"min_mm": -1000, "max_mm": 1000}],
+    "rotary_axes": [{"letter": "C", "about": "Z", "min_deg": -1e6, "max_deg": 1e6},
+                    {"letter": "A", "about": "X", "min_deg": -95, "max_deg": 95}],
+    "second_to_tip_mm": [0, 0, -150], "process": {"wire_feed": "M67 E0 Q{wfs}", "wire_feed_unit": "m/min"}})";
+  ParamSet p;
+  p.set("machine", file.string());
+  p.set("upright_tolerance", uprightDeg);
+  return p;
 }
 
 }  // namespace
@@ -112,5 +137,7 @@ int main()
   run("KRL, split at 100000 (1 part)", "export.krl", plan, kuka, single);
   run("FANUC TP, split at 9000 (default)", "export.fanuc_tp", plan, fanuc, split);
   run("FANUC TP, split at 15000", "export.fanuc_tp", plan, fanuc, tpSingle);
+  run("G-code, exact torch axis", "export.gcode", plan, nullptr, gcodeParams(0.0));
+  run("G-code, upright within 1 deg", "export.gcode", plan, nullptr, gcodeParams(1.0));
   return 0;
 }

@@ -204,7 +204,8 @@ int cmdExport(const std::vector<std::string>& argv)
                                           : source.report.depositSummary),
         "change the plan (spira-cli plan prints the change that works), or add --force to "
         "write the program anyway");
-  if (!cell) std::cerr << "note: no cell: the program's targets are torch poses in the part frame\n";
+  if (!cell && exporter->usesRobotCell())
+    std::cerr << "note: no cell: the program's targets are torch poses in the part frame\n";
 
   ExportJob job;
   job.exporterId = exporter->id();

@@ -154,7 +154,7 @@ int cmdPlan(const std::vector<std::string>& argv)
   args.rest = takeParamFlags(args.rest, targets);
   const auto positional = args.finish("plan", 1, 1);
   if (outDir.empty()) throw UsageError("'plan' needs an output folder", "write -o DIR");
-  if (exporter && cellFile.empty())
+  if (exporter && cellFile.empty() && exporter->usesRobotCell())
     std::cerr << "note: no --cell given: the program's targets are torch poses in the part frame\n";
 
   ensureWritableDirectory(outDir);

@@ -136,6 +136,7 @@ ExportOutcome exportTrajectory(const PluginRegistry& registry, const Trajectory&
   const ParamSet params = job.exporterParams.withDefaults(exporter.schema());
   exporter.schema().validate(params);
   if (planned.empty()) throw InputError("the plan has no points", "plan the part before exporting");
+  const RobotCell* cell = exporter.usesRobotCell() ? job.cell : nullptr;
 
   ExportOutcome out;
   // Sub-paths (a multi-branch plan) are prepared one by one, so no smoothing or decimation runs
@@ -200,7 +201,7 @@ ExportOutcome exportTrajectory(const PluginRegistry& registry, const Trajectory&
   out.robotTargets = program.size();
 
   JointTrajectory joints;
-  if (job.cell) {
+  if (cell) {
     SubProgress ikProgress(progress, 0.4, 0.7, "robot targets");
     // The prepared points are solved (and their spin optimised) afresh: fewer points than the plan,
     // so the program's joints are exactly those of its own targets; one solve per sub-path.
@@ -208,14 +209,14 @@ ExportOutcome exportTrajectory(const PluginRegistry& registry, const Trajectory&
     ms.optimiseSpin = job.optimiseSpin;
     if (job.positionerToleranceDeg)
       ms.process.positionerTiltTolerance = degToRad(*job.positionerToleranceDeg);
-    joints = solveSubPaths(*job.cell, program, motionParamsFor(*job.cell, ms), ikProgress).joints;
+    joints = solveSubPaths(*cell, program, motionParamsFor(*cell, ms), ikProgress).joints;
     for (size_t i = 0; i < joints.points.size(); ++i) {
       out.unreachableTargets += !joints.points[i].reachable;
       if (colliding[i]) joints.points[i].collision = true;
     }
   }
   SubProgress writeProgress(progress, 0.7, 1.0, "writing the program");
-  const ExportInput input{program, job.cell ? &joints : nullptr, job.header};
+  const ExportInput input{program, cell ? &joints : nullptr, job.header};
   out.result = exporter.write(input, params, outDir, writeProgress);
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return out;

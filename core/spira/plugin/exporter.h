@@ -29,6 +29,9 @@ class ExporterPlugin : public Plugin {
  public:
   PluginKind kind() const override { return PluginKind::Exporter; }
   virtual std::string fileDescription() const = 0;  // e.g. "KUKA KRL program (.src/.dat)"
+  // False for a machine that is not a robot cell (G-code with its own machine file): the export then
+  // solves no cell and the targets are the torch poses in the part frame.
+  virtual bool usesRobotCell() const { return true; }
   // Writes into `outDir` (which exists and is writable); all files or none.
   virtual ExportResult write(const ExportInput& input, const ParamSet& params,
                              const std::filesystem::path& outDir, Progress& progress) const = 0;
