@@ -207,6 +207,23 @@ class ProgressAndCancel(unittest.TestCase):
         self.assertIsInstance(raised.exception.__cause__, KeyError)
 
 
+class Thermal(unittest.TestCase):
+    def test_the_thermal_stage_is_spira_cli_thermal_of_the_plan(self):
+        with tempfile.TemporaryDirectory() as out:
+            planned, heat = pathlib.Path(out) / "plan", pathlib.Path(out) / "thermal"
+            done = cli("plan", DOME, "-o", str(planned), "--points-per-rev", "90")
+            self.assertEqual(done.returncode, 0, done.stderr)
+            done = cli("thermal", str(planned), "-o", str(heat))
+            self.assertEqual(done.returncode, 0, done.stderr)
+            header, rows = read_csv(heat / "thermal_points.csv")
+        plan = spira.plan(DOME, points_per_rev=90, settings={"thermal": {"enabled": True}})
+        self.assertEqual(len(plan.thermal["peak_c"]), len(rows))
+        np.testing.assert_array_equal(plan.thermal["peak_c"], rows[:, header.index("peak_C")])
+        np.testing.assert_array_equal(plan.thermal["interpass_c"], rows[:, header.index("interpass_C")])
+        self.assertEqual(plan.report["thermal"]["max_peak_C"], plan.thermal["peak_c"].max())
+        self.assertIsNone(spira.plan(DOME, points_per_rev=90).thermal)
+
+
 class Cell(unittest.TestCase):
     def test_joints_are_joints_csv(self):
         with tempfile.TemporaryDirectory() as out:
