@@ -12,7 +12,8 @@
 namespace spira::python {
 
 // Spira's Progress for a Python callback(fraction, stage): called with the GIL held, from whichever
-// thread reports; returning False or raising cancels the work. Without a callback it reports nothing.
+// thread reports; returning False or raising cancels the work. Each report also lets Python handle its
+// signals, so that Ctrl-C stops the work with KeyboardInterrupt.
 class PythonProgress final : public Progress {
  public:
   // `callback`: None or a callable; anything else is a TypeError naming `function`'s argument.
@@ -22,7 +23,7 @@ class PythonProgress final : public Progress {
   bool cancelled() const override { return cancel_.load(std::memory_order_relaxed); }
 
   // Runs `work` with the GIL released; a cancelled run raises spira.Cancelled (from the callback's
-  // exception when it raised one).
+  // exception when it raised one), an interrupted one the KeyboardInterrupt.
   template <class Work>
   auto run(Work&& work)
   {
@@ -30,14 +31,17 @@ class PythonProgress final : public Progress {
       pybind11::gil_scoped_release release;
       return std::forward<Work>(work)();
     } catch (const Cancelled&) {
-      raiseCancelled(error_.get());
+      raiseStopped();
     }
   }
 
  private:
+  [[noreturn]] void raiseStopped();
+
   pybind11::object callback_;
   std::atomic<bool> cancel_{false};
-  std::unique_ptr<pybind11::error_already_set> error_;  // what the callback raised
+  std::unique_ptr<pybind11::error_already_set> error_;      // what the callback raised
+  std::unique_ptr<pybind11::error_already_set> interrupt_;  // what a signal handler raised
 };
 
 }  // namespace spira::python

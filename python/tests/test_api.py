@@ -7,8 +7,11 @@ import csv
 import json
 import os
 import pathlib
+import signal
 import subprocess
 import tempfile
+import threading
+import time
 import unittest
 
 import numpy as np
@@ -205,6 +208,18 @@ class ProgressAndCancel(unittest.TestCase):
         with self.assertRaises(spira.Cancelled) as raised:
             spira.plan(DOME, progress=fail)
         self.assertIsInstance(raised.exception.__cause__, KeyError)
+
+
+class Interrupt(unittest.TestCase):
+    def test_ctrl_c_stops_a_long_plan_with_keyboard_interrupt(self):
+        # The thermal stage of the open cylinder takes about 20 s; the interrupt comes after 0.3 s.
+        cylinder = str(SOURCE / "resources" / "samples" / "open_cylinder.stl")
+        timer = threading.Timer(0.3, lambda: os.kill(os.getpid(), signal.SIGINT))
+        start = time.monotonic()
+        timer.start()
+        with self.assertRaises(KeyboardInterrupt):
+            spira.plan(cylinder, settings={"thermal": {"enabled": True}})
+        self.assertLess(time.monotonic() - start, 5.0)
 
 
 class Thermal(unittest.TestCase):
