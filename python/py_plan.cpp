@@ -15,6 +15,8 @@
 #include "py_part.h"
 #include "py_progress.h"
 #include "spira/base/error.h"
+#include "spira/document/document.h"
+#include "spira/document/project_file.h"
 #include "spira/pipeline/export_job.h"
 #include "spira/pipeline/planned_path.h"
 #include "spira/pipeline/prep_schema.h"
@@ -94,6 +96,44 @@ PlannedPart planPart(const LoadedPart& part, std::map<std::string, ParamSet> val
   return out;
 }
 
+// 'spira-cli plan PROJECT.spira': the project's part, placement, cell and settings, no other choice.
+PlannedPart planProject(const std::string& file, Options& options)
+{
+  PythonProgress progress("plan", options.take("progress"));
+  for (const char* name : {"settings", "strategy", "cell"})
+    if (options.has(name))
+      throw UsageError(
+          std::string("plan(): a project is planned with everything it holds, not with '") + name + "'",
+          "change it in Spira and save the project, or plan the part file with keywords");
+  options.finish();
+  Document doc;
+  progress.run([&] { doc.open(file); });
+  if (!doc.part())
+    throw InputError("the project '" + file + "' holds no part",
+                     "import a part into it in Spira and save it");
+  PlannedPart out;
+  const Part& part = *doc.part();
+  out.partPath = part.sourcePath.empty() ? part.name : part.sourcePath;
+  out.snapshot = doc.state();
+  if (doc.cell()) {
+    LoadedCell cell{doc.cell()->name, doc.cell(), nullptr};
+    // The program's targets stand in the world frame the project placed the part in.
+    cell.cell = std::make_shared<const RobotCell>(cellForPlacement(*doc.cell(), part.T_world_part));
+    out.cell = std::move(cell);
+  }
+  out.plan = std::make_shared<DocumentPlan>(
+      progress.run([&] { return planDocument(out.snapshot, builtinRegistry(), progress); }));
+  nlohmann::json& report = out.plan->report;
+  report["project"] = fs::absolute(file).lexically_normal().string();
+  report["part"] = out.partPath;
+  if (doc.cell()) report["cell"] = doc.cell()->name;
+  report["deposit_summary"] = out.plan->depositSummary;
+  const PlannedPath planned = plannedPathOf(out.plan->results);
+  out.path = planned.trajectory;
+  out.collision = planned.collision;
+  return out;
+}
+
 PlannedPart planFromPython(py::object part, const py::kwargs& kwargs)
 {
   Options options("plan", kwargs);
@@ -103,6 +143,7 @@ PlannedPart planFromPython(py::object part, const py::kwargs& kwargs)
     if (!py::isinstance<py::str>(part) && !py::hasattr(part, "__fspath__"))
       raiseTypeError("plan", "part", "a spira.Part or a path (str or os.PathLike)", part);
     file = pathArgument("plan", "part", part);
+    if (fs::path(file).extension() == kProjectExtension) return planProject(file, options);
   }
   ImportChoices choices;
   if (fromFile) choices.takePlacement(options);
@@ -161,7 +202,11 @@ py::dict exportPlan(const PlannedPart& planned, py::object folder, py::object fo
   if (!py::isinstance<py::str>(format)) raiseTypeError("export", "format", "str", format);
   const ExporterPlugin& exporter = exporterFor(registry, format.cast<std::string>());
   Options options("export", kwargs);
-  ParamSet exporterValues, prepValues;
+  // A project's stored exporter and preparation values, then the keywords over them (as 'spira-cli
+  // export PROJECT' merges its flags).
+  const PlanSettings& stored = *planned.snapshot.settings;
+  ParamSet exporterValues = stored.section(exporter.id());
+  ParamSet prepValues = stored.section(std::string(prepSection().name));
   options.takeSettings({FlagTarget{exporter.id(), &exporter.schema(), &exporterValues},
                         FlagTarget{std::string(prepSection().name), &prepSchema(), &prepValues}});
   PythonProgress progress("export", options.take("progress"));
@@ -239,16 +284,15 @@ void bindPlan(py::module_& m)
       "('export.krl') or its name ('krl'); settings the exporter's and the path preparation's by key\n"
       "(force=True writes an infeasible plan). Returns the files written and the target counts.");
 
-  m.def(
-      "plan", &planFromPython, py::arg("part"),
-      "plan(part, *, strategy='isovalue', cell=None, mid_surface=True, keep_collisions=False, "
-      "progress=None,\n"
-      "     settings=None, **settings) -> Plan\n\n"
-      "Plans one continuous spiral on part (a spira.Part, or a path loaded with load_part's options) as\n"
-      "'spira-cli plan' does. Settings by key (h=2.0, points_per_rev=360, ...), or settings={section or\n"
-      "plugin id: {key: value}}; settings={'thermal': {'enabled': True}} runs the thermal stage. cell (a\n"
-      "spira.Cell or a .cell path) solves the robot's joints. progress(fraction, stage) may return False or\n"
-      "raise to cancel: spira.Cancelled is raised.");
+  m.def("plan", &planFromPython, py::arg("part"),
+        "plan(part, *, strategy='isovalue', cell=None, mid_surface=True, keep_collisions=False,\n"
+        "     progress=None, settings=None, **settings) -> Plan\n\n"
+        "Plans one continuous spiral on part as 'spira-cli plan' does: a spira.Part, a part file (with\n"
+        "load_part's options) or a project (.spira, planned with everything it holds). Settings by key\n"
+        "(h=2.0, points_per_rev=360, ...) or settings={section or plugin id: {key: value}};\n"
+        "settings={'thermal': {'enabled': True}} runs the thermal stage. cell (a spira.Cell or a .cell\n"
+        "path) solves the robot's joints. progress(fraction, stage) may return False or raise to cancel:\n"
+        "spira.Cancelled is raised.");
 }
 
 }  // namespace spira::python

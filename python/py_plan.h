@@ -13,7 +13,7 @@ namespace spira::python {
 
 // spira.Cell: a .cell file read, and the cell solvable from it.
 struct LoadedCell {
-  std::string path;
+  std::string path;  // the .cell file; a project's cell: its name (program headers name it so)
   std::shared_ptr<const CellRecord> record;
   std::shared_ptr<const RobotCell> cell;
 };

@@ -257,5 +257,35 @@ class Cell(unittest.TestCase):
         self.assertTrue(plan.motion_ok)
 
 
+class Project(unittest.TestCase):
+    def test_a_project_plans_and_exports_as_the_cli(self):
+        project = SOURCE / "resources" / "samples" / "dome.spira"
+        with tempfile.TemporaryDirectory() as out:
+            out = pathlib.Path(out)
+            (out / "copy").mkdir()
+            saved = out / "copy" / "dome.spira"
+            saved.write_bytes(project.read_bytes())
+            done = cli("plan", str(saved), "-o", str(out / "plan"), "--save")
+            self.assertEqual(done.returncode, 0, done.stderr)
+            done = cli("export", str(saved), "--format", "fanuc_tp", "-o", str(out / "cli"))
+            self.assertEqual(done.returncode, 0, done.stderr)
+            _, rows = read_csv(out / "plan" / "trajectory.csv")
+            with open(out / "plan" / "joints.csv", newline="") as f:
+                q = np.array([[float(x) for x in r[1:7]] for r in list(csv.reader(f))[1:]])
+
+            plan = spira.plan(saved)
+            np.testing.assert_array_equal(plan.positions, rows[:, 1:4])
+            np.testing.assert_array_equal(plan.joints, q)
+            self.assertEqual(plan.report["project"], str(saved))
+            plan.export(out / "api", "fanuc_tp")
+            for name in sorted(p.name for p in (out / "cli").iterdir()):
+                self.assertEqual((out / "api" / name).read_bytes(), (out / "cli" / name).read_bytes(), name)
+
+    def test_a_project_takes_no_settings(self):
+        with self.assertRaises(spira.UsageError) as raised:
+            spira.plan(SOURCE / "resources" / "samples" / "dome.spira", settings={"h": 2.0})
+        self.assertIn("a project is planned with everything it holds, not with 'settings'", str(raised.exception))
+
+
 if __name__ == "__main__":
     unittest.main(verbosity=2)
