@@ -17,6 +17,7 @@
 #include "spira/base/error.h"
 #include "spira/document/document.h"
 #include "spira/document/project_file.h"
+#include "spira/pipeline/document_motion.h"
 #include "spira/pipeline/export_job.h"
 #include "spira/pipeline/planned_path.h"
 #include "spira/pipeline/prep_schema.h"
@@ -168,6 +169,56 @@ PlannedPart planFromPython(py::object part, const py::kwargs& kwargs)
   return planPart(loaded, plan.values, strategy, std::move(cell), planOptions, progress);
 }
 
+// Plan.solve: the plan's motion on another cell (or its first), the path planned once.
+PlannedPart solvePlan(const PlannedPart& planned, py::object cellArg, const py::kwargs& kwargs)
+{
+  Options options("solve", kwargs);
+  const bool resolveCollisions = !options.takeBool("keep_collisions").value_or(false);
+  PythonProgress progress("solve", options.take("progress"));
+  options.finish();
+  LoadedCell cell = py::isinstance<LoadedCell>(cellArg) ? cellArg.cast<LoadedCell>()
+                                                        : readCell(pathArgument("solve", "cell", cellArg));
+  PlannedPart out;
+  out.partPath = planned.partPath;
+  out.snapshot = planned.snapshot;
+  out.snapshot.cell = cell.record;
+  const Transform& placement = out.snapshot.part->T_world_part;
+  // The program's targets stand in the world frame a project placed the part in (as planProject's).
+  if (!placement.isApprox(Transform::Identity()))
+    cell.cell = std::make_shared<const RobotCell>(cellForPlacement(*cell.record, placement));
+  out.cell = std::move(cell);
+  out.plan = std::make_shared<DocumentPlan>(*planned.plan);
+  DocumentPlan& plan = *out.plan;
+  Results& r = plan.results;
+  const Trajectory& path = r.thermal && r.thermal->replanned ? *r.thermal->replanned : *r.process;
+  // As planDocument hands the motion stage the substrate: its height in the part's frame.
+  const double substrateZ =
+      out.snapshot.substrate->planeZ - out.snapshot.part->T_world_part.translation().z();
+  DocumentMotion motion = progress.run(
+      [&] { return solveDocumentMotion(out.snapshot, path, substrateZ, progress, resolveCollisions); });
+  plan.warnings = plan.output.warnings;  // a motion solved before warned of another cell
+  plan.warnings.insert(plan.warnings.end(), motion.warnings.begin(), motion.warnings.end());
+  plan.motionOk = motion.ok;
+  r.setKinematics(std::move(motion.result), motion.report
+                                                ? std::make_shared<const KinematicsStageReport>(
+                                                      KinematicsStageReport{*motion.report, motion.seconds})
+                                                : nullptr);
+  // The stages' report with this motion, and what was added to the plan's beyond its stages (the
+  // placement, the advice, the import time) kept; a cell file named before is the other cell's.
+  const nlohmann::json stagesBefore = mergedPlanReport(planned.plan->results);
+  nlohmann::json report = mergedPlanReport(r);
+  for (const auto& [key, value] : planned.plan->report.items())
+    if (!stagesBefore.contains(key) && key != "cell_file") report[key] = value;
+  for (const auto& [key, value] : planned.plan->report["timings_s"].items())
+    if (!stagesBefore["timings_s"].contains(key)) report["timings_s"][key] = value;
+  report["cell_file"] = fs::absolute(out.cell->path).lexically_normal().string();
+  plan.report = std::move(report);
+  const PlannedPath solved = plannedPathOf(r);
+  out.path = solved.trajectory;
+  out.collision = solved.collision;
+  return out;
+}
+
 std::time_t programTime()
 {
   const char* epoch = std::getenv("SOURCE_DATE_EPOCH");
@@ -277,6 +328,11 @@ void bindPlan(py::module_& m)
         return py::cast(*p.cell);
       });
   bindMotionArrays(plan);
+  plan.def(
+      "solve", &solvePlan, py::arg("cell"),
+      "solve(cell, *, keep_collisions=False, progress=None) -> Plan\n\n"
+      "The plan's robot motion on cell (a spira.Cell or a .cell path), the path not planned again: the\n"
+      "torch checked against the deposit and substrate, the joints solved (Plan.joints), as plan(cell=).");
   plan.def(
       "export", &exportPlan, py::arg("folder"), py::arg("format"),
       "export(folder, format, *, progress=None, **settings) -> dict\n\n"

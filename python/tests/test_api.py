@@ -257,6 +257,26 @@ class Cell(unittest.TestCase):
         self.assertTrue(plan.motion_ok)
 
 
+    def test_solving_a_plan_is_planning_on_the_cell(self):
+        fanuc = str(SOURCE / "resources" / "cells" / "fanuc_m20ia_positioner.cell")
+        planned = spira.plan(DOME)
+        self.assertIsNone(planned.joints)
+        for cell in (CELL, fanuc):
+            on_cell = spira.plan(DOME, cell=cell)
+            solved = planned.solve(cell)
+            np.testing.assert_array_equal(solved.joints, on_cell.joints)
+            np.testing.assert_array_equal(solved.positions, on_cell.positions)
+            reports = [solved.report, on_cell.report]
+            for r in reports:
+                r.pop("timings_s")
+                r.pop("kinematics_timings_s", None)
+            self.assertEqual(reports[0], reports[1])
+            planned = solved  # the next cell replaces this one's motion
+        with self.assertRaises(TypeError) as raised:
+            planned.solve(CELL, keep_collisions=1)
+        self.assertEqual(str(raised.exception), "solve(): argument 'keep_collisions' must be bool, not int")
+
+
 class Project(unittest.TestCase):
     def test_a_project_plans_and_exports_as_the_cli(self):
         project = SOURCE / "resources" / "samples" / "dome.spira"
