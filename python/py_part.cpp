@@ -6,6 +6,7 @@
 #include <map>
 
 #include <pybind11/numpy.h>
+#include <pybind11/stl.h>
 #include <nlohmann/json.hpp>
 
 #include "builtin_plugins.h"

@@ -120,6 +120,8 @@ class Placement(unittest.TestCase):
         as_read = spira.load_part(DOME)
         dropped = spira.load_part(DOME, drop=True, substrate_z=5.0)
         lowest = as_read.vertices[:, 2].min()
+        self.assertEqual((as_read.part_class, as_read.warnings, as_read.importer), ("closed", [], "import.stl"))
+        self.assertEqual(as_read.faces.shape, (as_read.report["face_count"], 3))
         self.assertEqual(dropped.vertices[:, 2].min(), 5.0)
         self.assertEqual(dropped.dropped_mm, 5.0 - lowest)
         np.testing.assert_array_equal(dropped.vertices[:, :2], as_read.vertices[:, :2])
