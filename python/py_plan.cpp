@@ -77,9 +77,6 @@ PlannedPart planPart(const LoadedPart& part, std::map<std::string, ParamSet> val
   Substrate plate;
   plate.planeZ = part.placement.substrateZ;
   snapshot.substrate = std::make_shared<const Substrate>(std::move(plate));
-  // Only the sections given are stored, as the CLI stores only the flags given.
-  for (auto it = values.begin(); it != values.end();)
-    it = it->second.values().empty() ? values.erase(it) : std::next(it);
   snapshot.settings = std::make_shared<const PlanSettings>(
       PlanSettings{decomposerIdOf(strategy), PlanSettings::kDefaultClosureFinder, std::move(values)});
 
@@ -204,14 +201,15 @@ PlannedPart solvePlan(const PlannedPart& planned, py::object cellArg, const py::
                                                       KinematicsStageReport{*motion.report, motion.seconds})
                                                 : nullptr);
   // The stages' report with this motion, and what was added to the plan's beyond its stages (the
-  // placement, the advice, the import time) kept; a cell file named before is the other cell's.
+  // placement, the advice, the import time) kept; a cell named before is the other cell.
   const nlohmann::json stagesBefore = mergedPlanReport(planned.plan->results);
   nlohmann::json report = mergedPlanReport(r);
   for (const auto& [key, value] : planned.plan->report.items())
-    if (!stagesBefore.contains(key) && key != "cell_file") report[key] = value;
+    if (!stagesBefore.contains(key) && key != "cell_file" && key != "cell") report[key] = value;
   for (const auto& [key, value] : planned.plan->report["timings_s"].items())
     if (!stagesBefore["timings_s"].contains(key)) report["timings_s"][key] = value;
   report["cell_file"] = fs::absolute(out.cell->path).lexically_normal().string();
+  if (report.contains("project")) report["cell"] = out.cell->record->name;
   plan.report = std::move(report);
   const PlannedPath solved = plannedPathOf(r);
   out.path = solved.trajectory;
