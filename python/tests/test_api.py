@@ -259,6 +259,17 @@ class Cell(unittest.TestCase):
         self.assertTrue(plan.motion_ok)
 
 
+    def test_an_export_the_cell_cannot_execute_is_refused_as_by_the_cli(self):
+        table = str(SOURCE / "resources" / "cells" / "kuka_kr16_2_table.cell")
+        with tempfile.TemporaryDirectory() as out:
+            code, message = cli_error("plan", DOME, "-o", out, "--cell", table, "--export", "krl")
+            plan = spira.plan(DOME, cell=table)
+            self.assertFalse(plan.motion_ok)
+            with self.assertRaises(spira.InfeasibleError) as raised:
+                plan.export(pathlib.Path(out) / "api", "krl")
+        self.assertEqual(str(raised.exception), message)
+        self.assertEqual((raised.exception.exit_code, code), (4, 4))
+
     def test_solving_a_plan_is_planning_on_the_cell(self):
         fanuc = str(SOURCE / "resources" / "cells" / "fanuc_m20ia_positioner.cell")
         planned = spira.plan(DOME)
