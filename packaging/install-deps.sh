@@ -17,5 +17,6 @@ $SUDO apt-get install -y -qq --no-install-recommends \
   libpetsc-real-dev openmpi-bin \
   libpcl-dev \
   libgtest-dev libgmock-dev \
+  python3-dev pybind11-dev python3-numpy \
   xvfb xauth libgl1-mesa-dri mesa-utils \
   >/dev/null

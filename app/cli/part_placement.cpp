@@ -1,12 +1,6 @@
 #include "part_placement.h"
 
 #include <cmath>
-#include <iomanip>
-#include <sstream>
-
-#include "spira/mesh/mesh_report.h"
-#include "spira/planning/level_base.h"
-#include "spira/planning/part_topology.h"
 
 namespace spira::cli {
 namespace {
@@ -47,34 +41,7 @@ PartPlacement PartPlacement::take(Args& args)
 
 PlacementChange PartPlacement::apply(ImportedPart& part) const
 {
-  PlacementChange change;
-  if (levelBase) {
-    const PartTopology topology = findPartTopology(part.report, part.mesh, substrateZ, lowerLoop, true);
-    LevelledBase levelled = spira::levelBase(part.mesh, topology.lower);
-    change.levelled = true;
-    change.cutZ = levelled.cutZ;
-    change.removed = levelled.removed;
-    part.mesh = std::move(levelled.mesh);
-    part.report = validateMesh(part.mesh);
-  }
-  if (!(drop || levelBase) || part.report.bounds.empty()) return change;
-  const double shift = substrateZ - part.report.bounds.min.z();
-  if (shift == 0.0) return change;
-  for (Vec3& v : part.mesh.vertices) v.z() += shift;
-  part.report = validateMesh(part.mesh);
-  change.dropped = shift;
-  return change;
-}
-
-std::string PlacementChange::text(double substrateZ) const
-{
-  std::ostringstream o;
-  o << std::fixed << std::setprecision(3);
-  if (levelled)
-    o << "levelled the base: cut the part at z = " << cutZ << " mm, " << removed << " mm off its base\n";
-  if (dropped != 0.0)
-    o << "dropped the part " << dropped << " mm along z onto the substrate (z = " << substrateZ << " mm)\n";
-  return o.str();
+  return placePart(part.mesh, part.report, PartPlacementOptions{lowerLoop, substrateZ, drop, levelBase});
 }
 
 }  // namespace spira::cli

@@ -2,18 +2,9 @@
 
 #include "cli_common.h"
 #include "spira/io/import_service.h"
+#include "spira/planning/part_placement.h"
 
 namespace spira::cli {
-
-// What PartPlacement::apply did to the part.
-struct PlacementChange {
-  double dropped = 0.0;  // move along z, mm
-  bool levelled = false;
-  double cutZ = 0.0, removed = 0.0;  // --level-base: the cut plane and the height taken off, mm
-
-  // One line per change for the terminal (empty when nothing changed).
-  std::string text(double substrateZ) const;
-};
 
 // Where the part stands, shared by 'plan' and 'compare': --lower-loop N (as 'info' numbers the
 // loops, from 1), --substrate-z Z (mm), --level-base and --drop.
@@ -24,9 +15,7 @@ struct PartPlacement {
   bool levelBase = false;
 
   static PartPlacement take(Args& args);  // throws UsageError for malformed values
-  // With --level-base, cuts the part level through the highest point of its base edge
-  // (level_base.h); with it or --drop, moves the part along z so its lowest point touches the
-  // substrate (as the GUI's Placement > Drop to Substrate does). Validates the result again.
+  // placePart (spira/planning/part_placement.h) with these flags.
   PlacementChange apply(ImportedPart& part) const;
 };
 

@@ -339,7 +339,7 @@ class Checker {
   // public headers only.
   void checkPluginClients()
   {
-    for (const char* top : {"tests", "bench", "app", "examples", "fuzz"})
+    for (const char* top : {"tests", "bench", "app", "python", "examples", "fuzz"})
       for (const fs::path& file : sourcesUnder(root_ / top)) {
         if (isUnder(file, root_ / "tests" / "architecture" / "fixtures")) continue;
         for (const Include& inc : includesOf(file)) {

@@ -24,4 +24,9 @@ echo "$version"
 "$work/root/usr/bin/spira-cli" info "$work/root/usr/share/spira/samples/dome.stl" >/dev/null
 # STEP is read by the packaged spira-import next to the packaged spira-cli.
 "$work/root/usr/bin/spira-cli" info "$(dirname "$0")/../data/hostile/step/unresolved_point.step" >/dev/null
+# The Python module, when the build made one, imports from the package and plans.
+if compgen -G "$build/python/spira*.so" >/dev/null; then
+  PYTHONPATH="$work/root/usr/lib/python3/dist-packages" /usr/bin/python3 -c \
+    "import spira; assert len(spira.plan('$work/root/usr/share/spira/samples/dome.stl')) > 0"
+fi
 echo "package OK: $(basename "$deb")"
