@@ -50,6 +50,9 @@ void printJoints(const RobotCell& cell, const JointVector& q, std::ostream& out)
   for (size_t k = 0; k < 6; ++k) out << "  " << limits[k].name << " " << jp.robotDeg[k];
   if (cell.convention().controller() == Controller::KukaKrc4)
     out << "  S " << jp.kukaStatus << "  T " << jp.kukaTurn;
+  else if (cell.convention().controller() == Controller::AbbIrc5)
+    out << "  confdata [" << jp.abbConf[0] << "," << jp.abbConf[1] << "," << jp.abbConf[2] << ","
+        << jp.abbConf[3] << "]";
   else
     out << "  CONFIG '" << jp.fanucConfig << "'";
 }
