@@ -101,6 +101,7 @@ int main()
   const Trajectory plan = spiral(200, 500);
   const JointTrajectory kuka = solved(plan, "kuka_krc4");
   const JointTrajectory fanuc = solved(plan, "fanuc_r30ib");
+  const JointTrajectory abb = solved(plan, "abb_irc5");
   ParamSet single;
   single.set("max_points", std::int64_t{100000});  // the KRL maximum
   single.set("process_command", std::string("speed_analog"));
@@ -112,5 +113,6 @@ int main()
   run("KRL, split at 100000 (1 part)", "export.krl", plan, kuka, single);
   run("FANUC TP, split at 9000 (default)", "export.fanuc_tp", plan, fanuc, split);
   run("FANUC TP, split at 15000", "export.fanuc_tp", plan, fanuc, tpSingle);
+  run("ABB RAPID, split at 5000 (default)", "export.rapid", plan, abb, split);
   return 0;
 }

@@ -98,15 +98,15 @@ void appendPose(std::string& t, const Transform& pose)
   t += "]";
 }
 
-// A weld speed to three significant digits (at least 0.001 mm/s): with a positioner turning the
+// A weld speed to three significant digits (at least 0.00001 mm/s): with a positioner turning the
 // part under the torch the TCP moves slowly in the base frame (tenths of mm/s), where fixed
 // decimals would distort the planned move times.
 std::string speedValueText(double mmPerS)
 {
   const auto decimalsOf = [](double v) {
-    return std::clamp(2 - static_cast<int>(std::floor(std::log10(v))), 0, 3);
+    return std::clamp(2 - static_cast<int>(std::floor(std::log10(v))), 0, 5);
   };
-  const double v = std::max(mmPerS, 0.001);
+  const double v = std::max(mmPerS, 1e-5);
   // Rounded first, so that 9.9999 and 10.0001 both give "10.0" (one welddata, not two).
   const double scale = std::pow(10.0, decimalsOf(v));
   const double rounded = std::round(v * scale) / scale;
