@@ -20,6 +20,10 @@ namespace spira {
 //                  cfx 0 = in front, in front, axis 5 positive; cfx 7 = behind, behind, negative.
 // With the IRB 1600's URDF (no offset between axes 3 and 4) "in front of the lower arm" is the
 // elbow bent as at the all-zero pose (arm_configuration.h "up"), so cfx = 4 back + 2 down + flip.
+// The same table and the same geometric reading (wrist centre in the frames turned by axes 1 and
+// 2) are implemented by the ARTE toolbox (arvc.umh.es/arte, compute_configuration_standard_6R for
+// the IRB 140/120/6650). ARTE puts an axis at exactly -90, -180... deg in the quadrant below; here
+// floor() puts it in the quadrant above, as for positive angles.
 // Axis values are the controller's (= URDF angles in degrees, controller_convention.h). Derived
 // from the URDF model; check a confdata on a controller before relying on it to pick a branch.
 struct AbbConfData {
