@@ -126,6 +126,7 @@ int main()
   const Trajectory plan = spiral(200, 500);
   const JointTrajectory kuka = solved(plan, "kuka_krc4");
   const JointTrajectory fanuc = solved(plan, "fanuc_r30ib");
+  const JointTrajectory abb = solved(plan, "abb_irc5");
   ParamSet single;
   single.set("max_points", std::int64_t{100000});  // the KRL maximum
   single.set("process_command", std::string("speed_analog"));
@@ -139,5 +140,6 @@ int main()
   run("FANUC TP, split at 15000", "export.fanuc_tp", plan, fanuc, tpSingle);
   run("G-code, exact torch axis", "export.gcode", plan, nullptr, gcodeParams(0.0));
   run("G-code, upright within 1 deg", "export.gcode", plan, nullptr, gcodeParams(1.0));
+  run("ABB RAPID, split at 5000 (default)", "export.rapid", plan, abb, split);
   return 0;
 }

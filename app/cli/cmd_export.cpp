@@ -156,8 +156,8 @@ int cmdExport(const std::vector<std::string>& argv)
   if (exporter) targets.push_back(FlagTarget{exporter->id(), &exporter->schema(), &exporterValues});
   if (help) {
     std::cout
-        << "usage: spira-cli export PROJECT.spira|PLAN_DIR --format krl|fanuc_tp|csv -o DIR [--cell CELL]\n"
-           "                        [parameter flags]\n\n"
+        << "usage: spira-cli export PROJECT.spira|PLAN_DIR --format krl|fanuc_tp|rapid|gcode|csv -o DIR\n"
+           "                        [--cell CELL] [parameter flags]\n\n"
            "Writes the robot program of a planned part: a Spira project (.spira, planned and saved)\n"
            "or a folder made by 'spira-cli plan' (PLAN_DIR/trajectory.csv). The path is smoothed and\n"
            "decimated under the tolerances below, solved on the cell (the project's cell, or the\n"
@@ -175,7 +175,7 @@ int cmdExport(const std::vector<std::string>& argv)
   const auto positional = args.finish("export", 1, 1);
   if (format.empty())
     throw UsageError("'export' needs a program format",
-                     "write --format krl, --format fanuc_tp or --format csv");
+                     "write --format krl, --format fanuc_tp, --format rapid or --format csv");
   if (outDir.empty()) throw UsageError("'export' needs an output folder", "write -o DIR");
   const fs::path input = positional[0];
   if (!fs::exists(input))

@@ -50,6 +50,9 @@ void printJoints(const RobotCell& cell, const JointVector& q, std::ostream& out)
   for (size_t k = 0; k < 6; ++k) out << "  " << limits[k].name << " " << jp.robotDeg[k];
   if (cell.convention().controller() == Controller::KukaKrc4)
     out << "  S " << jp.kukaStatus << "  T " << jp.kukaTurn;
+  else if (cell.convention().controller() == Controller::AbbIrc5)
+    out << "  confdata [" << jp.abbConf[0] << "," << jp.abbConf[1] << "," << jp.abbConf[2] << ","
+        << jp.abbConf[3] << "]";
   else
     out << "  CONFIG '" << jp.fanucConfig << "'";
 }
@@ -65,7 +68,8 @@ int cmdKin(const std::vector<std::string>& argv)
                  "Forward kinematics: the flange and TCP poses of the cell's robot for six axis values in\n"
                  "the controller's convention (degrees). Inverse kinematics: every joint solution, with its\n"
                  "configuration, that puts the TCP at the pose X Y Z (mm) A B C (KUKA, degrees) or W P R\n"
-                 "(FANUC, degrees), in the robot's base frame ($ROBROOT / World).\n";
+                 "(FANUC and ABB: R = Rz(R) Ry(P) Rx(W), degrees), in the robot's base frame\n"
+                 "($ROBROOT / World / ABB base).\n";
     return kExitOk;
   }
   const bool fk = args.takeSwitch("--fk");

@@ -33,7 +33,7 @@ namespace {
 
 constexpr const char* kResumeHelp =
     "usage: spira-cli resume PLAN_DIR --scan SCAN --at INDEX -o DIR [--bead-width MM]\n"
-    "                        [--export krl|fanuc_tp [exporter flags]]\n\n"
+    "                        [--export krl|fanuc_tp|rapid [exporter flags]]\n\n"
     "Re-plans the rest of the build of PLAN_DIR (written by 'spira-cli plan') from a scan of the\n"
     "wall as it stands after INDEX points were deposited. The scan (in the part's frame: align one\n"
     "taken elsewhere with scan-compare first) gives the top of the last bead on each generatrix;\n"

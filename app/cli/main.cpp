@@ -23,7 +23,7 @@ constexpr const char* kUsageText =
     "  thermal PLAN_DIR|PROJECT -o DIR   heat of the build: DIR/thermal.json, thermal_points.csv, "
     "probes.csv\n"
     "  kin CELL --fk J1..J6 | --ik X Y Z A B C   forward / inverse kinematics of a cell's robot\n"
-    "  export PLAN_DIR --format krl|fanuc_tp -o DIR   robot program of a plan\n"
+    "  export PLAN_DIR --format krl|fanuc_tp|rapid|gcode -o DIR   robot or machine program\n"
     "  scan-compare PART SCAN -o DIR   a scan aligned to the part and its deviation map\n"
     "  scan-sim PART|PLAN_DIR -o SCAN.ply   a simulated scan of a part, or of a plan built part way\n"
     "  resume PLAN_DIR --scan SCAN --at INDEX -o DIR   the rest of a build re-planned from a scan\n"

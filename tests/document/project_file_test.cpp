@@ -219,7 +219,7 @@ TEST(ProjectFile, ValidFrameWithBadContentIsAnInputError)
                InputError);  // face index far beyond the vertex count
   EXPECT_THROW(decodeProject(broken([](auto& j) { j["results"]["spiral"]["count"] = 21; })), InputError);
   EXPECT_THROW(decodeProject(broken([](auto& j) { j["part"]["T_world_part"][12] = 1.0; })), InputError);
-  EXPECT_THROW(decodeProject(broken([](auto& j) { j["cell"]["controller"] = "abb_irc5"; })), InputError);
+  EXPECT_THROW(decodeProject(broken([](auto& j) { j["cell"]["controller"] = "staubli_cs9"; })), InputError);
   EXPECT_THROW(decodeProject(broken([](auto& j) { j["part"]["source_unit"] = "furlong"; })), InputError);
   EXPECT_THROW(decodeProject(broken([](auto& j) { j["plan"]["params"]["process"]["x"] = nullptr; })),
                InputError);

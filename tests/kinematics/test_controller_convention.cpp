@@ -62,7 +62,8 @@ TEST(ControllerConvention, FanucJ3IsCoupledToJ2)
   const ArmIk ik = fanuc();
   const ControllerConvention fc(Controller::FanucR30ib, ik.chain());
   EXPECT_EQ(ControllerConvention::parse("fanuc_r30ib"), Controller::FanucR30ib);
-  EXPECT_THROW(ControllerConvention::parse("abb_irc5"), InputError);
+  EXPECT_EQ(ControllerConvention::parse("abb_irc5"), Controller::AbbIrc5);
+  EXPECT_THROW(ControllerConvention::parse("staubli_cs9"), InputError);
   // README: TP (0, 30, 0, 0, 0, 0) = URDF (0, 30, 30, 0, 0, 0).
   const std::array<double, 6> tp = fc.toControllerDeg(deg(0, 30, 30, 0, 0, 0));
   EXPECT_NEAR(tp[1], 30.0, 1e-12);

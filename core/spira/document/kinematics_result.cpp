@@ -16,8 +16,8 @@ bool samePoint(const JointPoint& a, const JointPoint& b)
 {
   return a.robotDeg == b.robotDeg && a.externalDeg == b.externalDeg &&
          a.baseTcp.matrix() == b.baseTcp.matrix() && a.kukaStatus == b.kukaStatus &&
-         a.kukaTurn == b.kukaTurn && a.fanucConfig == b.fanucConfig && a.reachable == b.reachable &&
-         a.dexterity == b.dexterity && a.collision == b.collision;
+         a.kukaTurn == b.kukaTurn && a.fanucConfig == b.fanucConfig && a.abbConf == b.abbConf &&
+         a.reachable == b.reachable && a.dexterity == b.dexterity && a.collision == b.collision;
 }
 
 bool sameJoints(const JointTrajectory& a, const JointTrajectory& b)
@@ -25,6 +25,8 @@ bool sameJoints(const JointTrajectory& a, const JointTrajectory& b)
   if (a.controller != b.controller || a.cellName != b.cellName || a.hasPositioner != b.hasPositioner ||
       a.points.size() != b.points.size())
     return false;
+  // Only ABB trajectories keep their tool in the project (results_codec.cpp).
+  if (a.controller == "abb_irc5" && a.flangeTcp.matrix() != b.flangeTcp.matrix()) return false;
   for (size_t k = 0; k < a.robotLimits.size(); ++k)
     if (!sameLimit(a.robotLimits[k], b.robotLimits[k])) return false;
   for (size_t k = 0; k < a.externalLimits.size(); ++k)

@@ -24,7 +24,7 @@ constexpr int kResultsSchema = 2;
 // compile as a reminder to store it too (and to bump kResultsSchema if old files lack it).
 static_assert(sizeof(void*) != 8 || sizeof(TrajectoryPoint) == 144, "update trajectoryToJson/FromJson");
 static_assert(sizeof(void*) != 8 || sizeof(Generatrices) == 104, "update generatricesToJson/FromJson");
-static_assert(sizeof(void*) != 8 || sizeof(JointPoint) == 256, "update jointsToJson/FromJson");
+static_assert(sizeof(void*) != 8 || sizeof(JointPoint) == 272, "update jointsToJson/FromJson");
 static_assert(sizeof(void*) != 8 || sizeof(KinematicsCheck) == 32, "update kinematicsToJson/FromJson");
 
 }  // namespace
@@ -186,7 +186,9 @@ nlohmann::json jointsToJson(const JointTrajectory& t)
 {
   const size_t n = t.points.size();
   std::vector<double> robot, external, pose, dexterity;
-  std::vector<std::int32_t> status(n), turn(n), reachable(n), collision(n), configIndex(n);
+  std::vector<std::int32_t> status(n), turn(n), reachable(n), collision(n), configIndex(n), abbConf;
+  const bool abb = t.controller == "abb_irc5";
+  if (abb) abbConf.reserve(4 * n);
   robot.reserve(6 * n);
   external.reserve(2 * n);
   pose.reserve(12 * n);
@@ -206,23 +208,33 @@ nlohmann::json jointsToJson(const JointTrajectory& t)
     auto it = std::find(configs.begin(), configs.end(), p.fanucConfig);
     if (it == configs.end()) it = configs.insert(configs.end(), p.fanucConfig);
     configIndex[i] = static_cast<std::int32_t>(it - configs.begin());
+    if (abb) abbConf.insert(abbConf.end(), p.abbConf.begin(), p.abbConf.end());
   }
-  return {{"count", n},
-          {"controller", t.controller},
-          {"cell_name", t.cellName},
-          {"has_positioner", t.hasPositioner},
-          {"robot_limits", limitsToJson({t.robotLimits.begin(), t.robotLimits.end()})},
-          {"external_limits", limitsToJson({t.externalLimits.begin(), t.externalLimits.end()})},
-          {"robot_deg", codec::doublesToBlob(robot)},
-          {"external_deg", codec::doublesToBlob(external)},
-          {"base_tcp", codec::doublesToBlob(pose)},
-          {"dexterity", codec::doublesToBlob(dexterity)},
-          {"kuka_status", codec::intsToBlob(status)},
-          {"kuka_turn", codec::intsToBlob(turn)},
-          {"reachable", codec::intsToBlob(reachable)},
-          {"collision", codec::intsToBlob(collision)},
-          {"fanuc_configs", configs},
-          {"fanuc_config", codec::intsToBlob(configIndex)}};
+  nlohmann::json j = {{"count", n},
+                      {"controller", t.controller},
+                      {"cell_name", t.cellName},
+                      {"has_positioner", t.hasPositioner},
+                      {"robot_limits", limitsToJson({t.robotLimits.begin(), t.robotLimits.end()})},
+                      {"external_limits", limitsToJson({t.externalLimits.begin(), t.externalLimits.end()})},
+                      {"robot_deg", codec::doublesToBlob(robot)},
+                      {"external_deg", codec::doublesToBlob(external)},
+                      {"base_tcp", codec::doublesToBlob(pose)},
+                      {"dexterity", codec::doublesToBlob(dexterity)},
+                      {"kuka_status", codec::intsToBlob(status)},
+                      {"kuka_turn", codec::intsToBlob(turn)},
+                      {"reachable", codec::intsToBlob(reachable)},
+                      {"collision", codec::intsToBlob(collision)},
+                      {"fanuc_configs", configs},
+                      {"fanuc_config", codec::intsToBlob(configIndex)}};
+  // Only ABB trajectories carry confdata, so that other projects keep their file byte for byte.
+  if (abb) {
+    j["abb_conf"] = codec::intsToBlob(abbConf);
+    std::vector<double> tcp;
+    for (int r = 0; r < 3; ++r)
+      for (int c = 0; c < 4; ++c) tcp.push_back(t.flangeTcp.matrix()(r, c));
+    j["flange_tcp"] = codec::doublesToBlob(tcp);
+  }
+  return j;
 }
 
 JointTrajectory jointsFromJson(const nlohmann::json& j, const std::string& what)
@@ -254,9 +266,20 @@ JointTrajectory jointsFromJson(const nlohmann::json& j, const std::string& what)
   const auto& configs = codec::field(j, "fanuc_configs", what);
   if (!configs.is_array())
     throw InputError(what + ": 'fanuc_configs' is not an array", "the project file is damaged");
+  if (j.contains("flange_tcp")) {
+    const auto tcp =
+        sized(codec::decodeDoubleBlob(codec::field(j, "flange_tcp", what), what + " flange_tcp"), 12, what);
+    for (int r = 0; r < 3; ++r)
+      for (int c = 0; c < 4; ++c) t.flangeTcp.matrix()(r, c) = tcp[static_cast<size_t>(4 * r + c)];
+  }
+  std::vector<std::int32_t> abbConf;
+  if (j.contains("abb_conf"))
+    abbConf = sized(codec::blobToInts(codec::field(j, "abb_conf", what), what + " abb_conf"), 4 * n, what);
   t.points.resize(n);
   for (size_t i = 0; i < n; ++i) {
     JointPoint& p = t.points[i];
+    if (!abbConf.empty())
+      std::copy_n(abbConf.begin() + static_cast<std::ptrdiff_t>(4 * i), 4, p.abbConf.begin());
     std::copy_n(robot.begin() + static_cast<std::ptrdiff_t>(6 * i), 6, p.robotDeg.begin());
     std::copy_n(external.begin() + static_cast<std::ptrdiff_t>(2 * i), 2, p.externalDeg.begin());
     for (int r = 0; r < 3; ++r)

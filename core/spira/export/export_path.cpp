@@ -96,6 +96,7 @@ void checkJointMotion(const JointTrajectory& joints, ExportPath& path)
   JointSpeedCheck speeds;
   size_t branchChanges = 0, firstChange = 0;
   const bool kuka = joints.controller == "kuka_krc4";
+  const bool abb = joints.controller == "abb_irc5";
   for (size_t i = 1; i < path.points.size(); ++i) {
     const ExportPoint& a = path.points[i - 1];
     const ExportPoint& b = path.points[i];
@@ -108,8 +109,9 @@ void checkJointMotion(const JointTrajectory& joints, ExportPath& path)
           speeds.note(joints.externalLimits[k], std::abs(b.externalDeg[k] - a.externalDeg[k]) / b.moveTime,
                       i);
     }
-    const bool changed =
-        kuka ? a.kukaStatus != b.kukaStatus : fanucBranch(a.fanucConfig) != fanucBranch(b.fanucConfig);
+    const bool changed = kuka  ? a.kukaStatus != b.kukaStatus
+                         : abb ? a.abbConf[3] != b.abbConf[3]
+                               : fanucBranch(a.fanucConfig) != fanucBranch(b.fanucConfig);
     if (changed && branchChanges++ == 0) firstChange = i;
   }
   if (speeds.count > 0)
@@ -118,8 +120,11 @@ void checkJointMotion(const JointTrajectory& joints, ExportPath& path)
                             "); the controller will slow down there and the deposit will thicken");
   if (branchChanges > 0)
     path.warnings.push_back("the robot configuration (" +
-                            std::string(kuka ? "KUKA status S" : "FANUC CONFIG") + ") changes " +
-                            std::to_string(branchChanges) + " times (first into " + pointText(firstChange) +
+                            std::string(kuka  ? "KUKA status S"
+                                        : abb ? "ABB cfx"
+                                              : "FANUC CONFIG") +
+                            ") changes " + std::to_string(branchChanges) + " times (first into " +
+                            pointText(firstChange) +
                             "); a linear move cannot switch branches, check the kinematics solution");
 }
 
@@ -269,6 +274,7 @@ ExportPath prepareExportPath(const ExportInput& input, const PathOptions& option
       ep.kukaStatus = jp.kukaStatus;
       ep.kukaTurn = jp.kukaTurn;
       ep.fanucConfig = jp.fanucConfig;
+      ep.abbConf = jp.abbConf;
       ep.problem = pointProblem(jp, *joints);
       bool jointsFinite = true;
       for (double q : jp.robotDeg) jointsFinite = jointsFinite && std::isfinite(q);

@@ -25,7 +25,7 @@ enum class ProcessCommand {
 
 // The settings every exporter shares (see export_params.h for their schema entries).
 struct PathOptions {
-  std::string controller;         // "kuka_krc4" or "fanuc_r30ib": a joint trajectory must match
+  std::string controller;         // "kuka_krc4", "fanuc_r30ib" or "abb_irc5": a joint trajectory must match
   double approachDistance = 0.0;  // mm back along the torch axis; 0 = start and end on the path
   double approachSpeed = 20.0;    // mm/s on the approach and retract moves
   ProcessCommand process = ProcessCommand::Speed;
@@ -54,7 +54,8 @@ struct ExportPoint {
   int kukaStatus = 0;
   int kukaTurn = 0;
   std::string fanucConfig;
-  std::string problem;  // "unreachable", "in collision", "A5 outside its limits"...; empty when fine
+  std::array<int, 4> abbConf{};  // cf1, cf4, cf6, cfx
+  std::string problem;           // "unreachable", "in collision", "A5 outside its limits"...; empty when fine
 };
 
 // The trajectory checked and turned into controller-ready targets, shared by the exporters.

@@ -4,6 +4,7 @@
 
 #include "spira/base/error.h"
 #include "spira/base/units.h"
+#include "spira/kinematics/abb_confdata.h"
 #include "spira/kinematics/fanuc_config.h"
 #include "spira/kinematics/kuka_status_turn.h"
 
@@ -16,11 +17,13 @@ ControllerConvention::ControllerConvention(Controller controller, const Kinemati
     throw InputError("a controller convention needs a 6-joint arm; the chain " + chain.baseLink() + " -> " +
                          chain.tipLink() + " has " + std::to_string(chain.size()),
                      "choose the arm's chain from its foot to its flange or tool0 link");
-  const char prefix = controller == Controller::KukaKrc4 ? 'A' : 'J';
+  const std::string prefix = controller == Controller::KukaKrc4     ? "A"
+                             : controller == Controller::FanucR30ib ? "J"
+                                                                    : "rax_";
   for (size_t i = 0; i < 6; ++i) {
     const ChainJoint& j = chain.joint(i);
     AxisLimit& l = limits_[i];
-    l.name = std::string(1, prefix) + std::to_string(i + 1);
+    l.name = prefix + std::to_string(i + 1);
     l.minDeg = radToDeg(j.lower);
     l.maxDeg = radToDeg(j.upper);
     l.maxSpeedDegPerS = radToDeg(j.maxVelocity);
@@ -29,14 +32,23 @@ ControllerConvention::ControllerConvention(Controller controller, const Kinemati
 
 std::string ControllerConvention::id(Controller controller)
 {
-  return controller == Controller::KukaKrc4 ? "kuka_krc4" : "fanuc_r30ib";
+  switch (controller) {
+    case Controller::KukaKrc4:
+      return "kuka_krc4";
+    case Controller::FanucR30ib:
+      return "fanuc_r30ib";
+    case Controller::AbbIrc5:
+      return "abb_irc5";
+  }
+  return "unknown";
 }
 
 Controller ControllerConvention::parse(const std::string& id)
 {
   if (id == "kuka_krc4") return Controller::KukaKrc4;
   if (id == "fanuc_r30ib") return Controller::FanucR30ib;
-  throw InputError("unknown robot controller '" + id + "'", "use kuka_krc4 or fanuc_r30ib");
+  if (id == "abb_irc5") return Controller::AbbIrc5;
+  throw InputError("unknown robot controller '" + id + "'", "use kuka_krc4, fanuc_r30ib or abb_irc5");
 }
 
 std::array<double, 6> ControllerConvention::toControllerDeg(const JointVector& q) const
@@ -78,8 +90,10 @@ void ControllerConvention::describe(const OpwModel& model, const JointVector& q,
     const KukaStatusTurn st = kukaStatusTurn(model, q);
     point.kukaStatus = st.status;
     point.kukaTurn = st.turn;
-  } else {
+  } else if (controller_ == Controller::FanucR30ib) {
     point.fanucConfig = fanucConfig(model, q).format();
+  } else {
+    point.abbConf = abbConfData(model, q).values;
   }
 }
 

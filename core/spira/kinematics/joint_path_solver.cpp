@@ -36,6 +36,7 @@ JointTrajectory solveJointTrajectory(const ArmIk& ik, const ControllerConvention
   JointTrajectory out;
   out.controller = convention.id();
   out.cellName = setup.cellName;
+  out.flangeTcp = setup.flangeTcp;
   out.hasPositioner = setup.positioner != nullptr;
   out.robotLimits = convention.axisLimits();
   if (setup.positioner) {

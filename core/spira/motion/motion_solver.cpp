@@ -51,6 +51,7 @@ JointTrajectory jointTrajectory(const ControllerConvention& convention, const Ar
   JointTrajectory out;
   out.controller = convention.id();
   out.cellName = setup.cellName;
+  out.flangeTcp = setup.flangeTcp;
   out.hasPositioner = setup.positioner != nullptr;
   out.robotLimits = convention.axisLimits();
   if (setup.positioner)

@@ -9,6 +9,7 @@ std::string jointsCsv(const JointTrajectory& joints)
   std::string out = "index,q1,q2,q3,q4,q5,q6,e1,e2,config,reachable,dexterity,collision\n";
   out.reserve(out.size() + joints.size() * 160);
   const bool fanuc = joints.controller == "fanuc_r30ib";
+  const bool abb = joints.controller == "abb_irc5";
   for (size_t i = 0; i < joints.size(); ++i) {
     const JointPoint& p = joints.points[i];
     appendNumber(out, static_cast<long long>(i));
@@ -22,6 +23,9 @@ std::string jointsCsv(const JointTrajectory& joints)
     }
     if (fanuc) {
       out += ",\"" + p.fanucConfig + "\"";
+    } else if (abb) {
+      out += ",\"[" + std::to_string(p.abbConf[0]) + "," + std::to_string(p.abbConf[1]) + "," +
+             std::to_string(p.abbConf[2]) + "," + std::to_string(p.abbConf[3]) + "]\"";
     } else {
       out += ",S" + std::to_string(p.kukaStatus) + " T" + std::to_string(p.kukaTurn);
     }

@@ -175,8 +175,10 @@ CellRecord cellFromText(const std::string& text, const std::filesystem::path& ba
     c.controller = ControllerFamily::KukaKrc4;
   } else if (controller == controllerFamilyName(ControllerFamily::FanucR30iB)) {
     c.controller = ControllerFamily::FanucR30iB;
+  } else if (controller == controllerFamilyName(ControllerFamily::AbbIrc5)) {
+    c.controller = ControllerFamily::AbbIrc5;
   } else {
-    r.fail("controller", "'" + controller + "' is unknown (use kuka_krc4 or fanuc_r30ib)");
+    r.fail("controller", "'" + controller + "' is unknown (use kuka_krc4, fanuc_r30ib or abb_irc5)");
   }
 
   const auto& robot = r.need(j, "robot", "top level");

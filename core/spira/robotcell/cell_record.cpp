@@ -53,7 +53,15 @@ std::vector<CellAxis> axesFromJson(const nlohmann::json& j, const char* key)
 
 const char* controllerFamilyName(ControllerFamily c)
 {
-  return c == ControllerFamily::KukaKrc4 ? "kuka_krc4" : "fanuc_r30ib";
+  switch (c) {
+    case ControllerFamily::KukaKrc4:
+      return "kuka_krc4";
+    case ControllerFamily::FanucR30iB:
+      return "fanuc_r30ib";
+    case ControllerFamily::AbbIrc5:
+      return "abb_irc5";
+  }
+  return "unknown";
 }
 
 const char* partMountingName(PartMounting m)
@@ -144,8 +152,10 @@ CellRecord cellRecordFromJson(const nlohmann::json& j)
     c.controller = ControllerFamily::KukaKrc4;
   else if (controller == controllerFamilyName(ControllerFamily::FanucR30iB))
     c.controller = ControllerFamily::FanucR30iB;
+  else if (controller == controllerFamilyName(ControllerFamily::AbbIrc5))
+    c.controller = ControllerFamily::AbbIrc5;
   else
-    badCell("unknown controller '" + controller + "' (use kuka_krc4 or fanuc_r30ib)");
+    badCell("unknown controller '" + controller + "' (use kuka_krc4, fanuc_r30ib or abb_irc5)");
   c.T_world_robotbase =
       codec::transformFromJson(codec::field(j, "T_world_robotbase", what), "cell T_world_robotbase");
   const auto& tool = codec::field(j, "tool", what);

@@ -14,8 +14,8 @@ namespace spira {
 // elsewhere. Angles here are in degrees because they mirror controller and data-sheet values;
 // convert with degToRad where they are used. Lengths are mm.
 
-enum class ControllerFamily { KukaKrc4, FanucR30iB };
-const char* controllerFamilyName(ControllerFamily c);  // "kuka_krc4", "fanuc_r30ib"
+enum class ControllerFamily { KukaKrc4, FanucR30iB, AbbIrc5 };
+const char* controllerFamilyName(ControllerFamily c);  // "kuka_krc4", "fanuc_r30ib", "abb_irc5"
 
 enum class PartMounting { FixedTable, Positioner };
 const char* partMountingName(PartMounting m);  // "fixed_table", "positioner"

@@ -12,6 +12,19 @@ namespace spira {
 
 namespace {
 
+Controller controllerOf(ControllerFamily family)
+{
+  switch (family) {
+    case ControllerFamily::KukaKrc4:
+      return Controller::KukaKrc4;
+    case ControllerFamily::FanucR30iB:
+      return Controller::FanucR30ib;
+    case ControllerFamily::AbbIrc5:
+      return Controller::AbbIrc5;
+  }
+  return Controller::KukaKrc4;
+}
+
 std::string rootLinkOf(const std::string& urdfPath)
 {
   return parseUrdfModel(readFile(urdfPath), "the robot description " + urdfPath)->getRoot()->name;
@@ -72,8 +85,11 @@ RobotCell::RobotCell(const CellRecord& record) : record_(record)
                      "set robot.j23_coupling to 1");
   if (record.controller == ControllerFamily::KukaKrc4 && record.j23Coupling != 0)
     throw InputError(armWhat + ": KUKA arms have no J2/J3 linkage", "set robot.j23_coupling to 0");
-  convention_ = std::make_unique<ControllerConvention>(
-      record.controller == ControllerFamily::KukaKrc4 ? Controller::KukaKrc4 : Controller::FanucR30ib, *arm_);
+  if (record.controller == ControllerFamily::AbbIrc5 && record.j23Coupling != 0)
+    throw InputError(
+        armWhat + ": Spira supports ABB's serial arms (IRB 1600, 2600...), without a J2/J3 linkage",
+        "set robot.j23_coupling to 0 and use a serial arm");
+  convention_ = std::make_unique<ControllerConvention>(controllerOf(record.controller), *arm_);
   try {
     ik_ = std::make_unique<ArmIk>(*arm_);
     convention_->applyTo(*ik_);

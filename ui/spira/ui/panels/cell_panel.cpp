@@ -190,10 +190,13 @@ void CellPanel::refresh()
   lines << tr("Robot: %1").arg(QFileInfo(fromStd(cell->robotUrdf)).dir().dirName());
   lines << tr("Controller: %1")
                .arg(cell->controller == ControllerFamily::FanucR30iB ? tr("FANUC R-30iB (TP)")
+                    : cell->controller == ControllerFamily::AbbIrc5  ? tr("ABB IRC5 (RAPID)")
                                                                      : tr("KUKA KRC4 (KRL)"));
+  const QString axisPrefix = cell->controller == ControllerFamily::FanucR30iB ? "J"
+                             : cell->controller == ControllerFamily::AbbIrc5  ? "rax_"
+                                                                              : "A";
   for (size_t k = 0; k < cell->robotAxes.size(); ++k)
-    lines << axisLine(cell->robotAxes[k], (cell->controller == ControllerFamily::FanucR30iB ? "J" : "A") +
-                                              QString::number(k + 1));
+    lines << axisLine(cell->robotAxes[k], axisPrefix + QString::number(k + 1));
   const Vec3 tcp = cell->tool.T_flange_tcp.translation();
   lines
       << tr("Tool: TCP at (%1, %2, %3) mm from the flange; nozzle %4 mm radius, %5 mm long; body %6 x %7 mm")

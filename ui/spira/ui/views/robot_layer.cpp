@@ -136,9 +136,12 @@ std::vector<std::string> RobotLayer::setCell(const CellRecord* record)
   robotShapes_ = std::make_unique<RobotShapes>(
       readRobotShapes(record->robotUrdf, record->robotBaseLink, record->robotTipLink));
   warnings = robotShapes_->warnings;
-  // FANUC arms are yellow, KUKA arms orange: the colours users know them by.
+  // FANUC arms are yellow, KUKA and ABB arms orange: the colours users know them by.
   const double fanuc[3] = {0.93, 0.76, 0.12}, kuka[3] = {0.96, 0.47, 0.09}, standIn[3] = {0.85, 0.2, 0.75};
-  const double* armColour = record->controller == ControllerFamily::FanucR30iB ? fanuc : kuka;
+  const double abb[3] = {0.74, 0.35, 0.16};
+  const double* armColour = record->controller == ControllerFamily::FanucR30iB ? fanuc
+                            : record->controller == ControllerFamily::AbbIrc5  ? abb
+                                                                               : kuka;
   for (size_t k = 0; k < robotShapes_->links.size(); ++k) {
     const LinkShape& s = robotShapes_->links[k];
     // The visual mesh when it read; otherwise the collision shape, in magenta if that is a stand-in.
