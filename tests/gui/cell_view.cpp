@@ -138,6 +138,38 @@ TEST(CellView, BundledCellAroundThePart)
   EXPECT_TRUE(robot.hasCell());
 }
 
+// The ABB cell is offered like the others; the dome planned on it is reached everywhere and drawn with
+// the arm over the positioner.
+TEST(CellView, TheAbbCellPlansTheDome)
+{
+  Document doc;
+  MainWindow w(doc, builtinRegistry(), MainWindowOptions{false, false});
+  showAndWait(w);
+  ASSERT_TRUE(openAndWait(w, qpath(sourceDir() / "resources" / "samples" / "dome.stl")));
+  ui::CellWorkspace* cells = w.cellWorkspace();
+  QComboBox* combo = cells->cellPanel()->cellCombo();
+  const QString file = QFileInfo(qpath(sourceDir() / "resources" / "cells" / "abb_irb1600_positioner.cell"))
+                           .canonicalFilePath();
+  const int item = combo->findData(file, Qt::UserRole);
+  ASSERT_GE(item, 1);
+  EXPECT_TRUE(combo->itemText(item).startsWith("ABB IRB 1600")) << combo->itemText(item).toStdString();
+  combo->setCurrentIndex(item);
+  emit combo->activated(item);
+  ASSERT_TRUE(doc.cell());
+  ASSERT_TRUE(cells->robotLayer().hasCell());
+  ASSERT_TRUE(planAndWait(w)) << w.lastErrorMessage().toStdString();
+  ASSERT_TRUE(doc.results().kinematics);
+  EXPECT_TRUE(cells->simulationPanel()->hasMotion());
+  // On its riser the arm clears the positioner over the whole dome: nothing is flagged.
+  for (int i = 0; i < w.logPanel()->count(); ++i) {
+    EXPECT_FALSE(w.logPanel()->text(i).contains("collid")) << w.logPanel()->text(i).toStdString();
+    EXPECT_FALSE(w.logPanel()->text(i).contains("out of reach")) << w.logPanel()->text(i).toStdString();
+  }
+  w.sceneView()->render();
+  EXPECT_TRUE(insideView(w.sceneView()->renderer(), cells->robotLayer().bounds()));
+  saveDocScreenshot(w.captureImage(), "cell-abb.png");
+}
+
 TEST(CellView, MissingMeshShowsAStandInAndAWarning)
 {
   TempDir dir;

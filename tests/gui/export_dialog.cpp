@@ -160,6 +160,38 @@ TEST(ExportDialog, PreviewsWarnsAndWritesTheProgram)
   d->close();
 }
 
+// The formats added for ABB and gantry cells are offered by the same dialog, each with its preview:
+// a RAPID module with one ArcLStart and one ArcLEnd, and G-code for the bundled machine file.
+TEST(ExportDialog, PreviewsRapidAndGcode)
+{
+  TempDir dir;
+  Document doc;
+  MainWindow w(doc, builtinRegistry(), MainWindowOptions{false, false});
+  showAndWait(w);
+  ASSERT_TRUE(openAndWait(w, qpath(writeOpenCylinderStl(dir.path()))));
+  ASSERT_TRUE(planAndWait(w));
+  w.actions().exportProgram->trigger();
+  ExportDialog* d = w.exportDialog();
+  ASSERT_TRUE(waitFor([&] { return d->isVisible(); }, 5000));
+
+  d->setExporter("export.rapid");
+  ASSERT_TRUE(waitPreview(d)) << d->summaryLabel()->text().toStdString();
+  ASSERT_GE(d->previewTabs()->count(), 1);
+  EXPECT_TRUE(d->previewTabs()->tabText(0).endsWith(".mod")) << d->previewTabs()->tabText(0).toStdString();
+  const QString mod = tabText(d, 0);
+  EXPECT_TRUE(mod.startsWith("%%%") || mod.contains("MODULE ")) << mod.left(300).toStdString();
+
+  // G-code needs its machine: refused with the reason until one is given.
+  d->setExporter("export.gcode");
+  EXPECT_FALSE(waitPreview(d));
+  d->setExporterValue("machine", (sourceDir() / "resources/machines/gantry_ca_head.machine").string());
+  ASSERT_TRUE(waitPreview(d)) << d->summaryLabel()->text().toStdString();
+  ASSERT_EQ(d->previewTabs()->count(), 1);
+  EXPECT_TRUE(d->previewTabs()->tabText(0).endsWith(".nc")) << d->previewTabs()->tabText(0).toStdString();
+  EXPECT_TRUE(tabText(d, 0).contains("G1 ")) << tabText(d, 0).left(300).toStdString();
+  d->close();
+}
+
 TEST(ExportRequest, WarnsAboutPointsOutsideTheWindowFromThePlan)
 {
   Results r;

@@ -85,7 +85,9 @@ ExportPreview previewExport(const PluginRegistry& registry, const ExportRequest&
     throw IoError("cannot make a temporary folder for the export preview: " + dir.errorString().toStdString(),
                   "check that the temporary folder (TMPDIR) is writable");
   ParamSet params = request.exporterParams;
-  params.set("force", true);
+  // A preview shows the program even where a point is flagged; the warnings say so. Formats whose
+  // program has nothing to force (no reach, no collisions: a gantry's G-code) have no such setting.
+  if (registry.exporter(request.exporterId).schema().find("force")) params.set("force", true);
   ExportPreview preview;
   preview.outcome = run(registry, request, params, dir.path().toStdString(), progress);
   for (const auto& file : preview.outcome.result.files) preview.files.push_back(readHead(file, lines));
