@@ -23,8 +23,8 @@ namespace {
 ParamSchema makeSchema()
 {
   std::vector<ParamDef> defs;
-  defs.push_back(textParam("machine", "",
-                           {"Machine file",
+  defs.push_back(
+      pathParam("machine", {"Machine file",
                             "The .machine file of the gantry and its tilting head: axis letters, rotary axes "
                             "and offsets, limits, feeds and the process codes (docs/machine-format.md; "
                             "resources/machines/ has an example).",

@@ -119,7 +119,9 @@ std::string paramFlagsHelp(const std::vector<FlagTarget>& targets)
         out << "  [" << category << "]\n";
       }
       out << "  " << flagForKey(d.key) << valueHint(d) << "\n      " << d.label << ". " << d.tooltip;
-      out << " Default: " << paramValueToString(d.defaultValue) << (d.unit.empty() ? "" : " " + d.unit);
+      const std::string byDefault = paramValueToString(d.defaultValue);
+      out << " Default: " << (byDefault.empty() ? std::string("none") : byDefault)
+          << (d.unit.empty() ? "" : " " + d.unit);
       if (d.min || d.max) {
         out << "; range ";
         out << (d.min ? paramValueToString(*d.min) : std::string("-inf")) << " .. "
