@@ -217,39 +217,18 @@ PlannedPart solvePlan(const PlannedPart& planned, py::object cellArg, const py::
   return out;
 }
 
-std::time_t programTime()
-{
-  const char* epoch = std::getenv("SOURCE_DATE_EPOCH");
-  if (!epoch || !*epoch) return std::time(nullptr);
-  char* end = nullptr;
-  const long long seconds = std::strtoll(epoch, &end, 10);
-  if (*end != '\0' || seconds < 0)
-    throw UsageError(
-        "SOURCE_DATE_EPOCH must be a whole number of seconds since 1970, not '" + std::string(epoch) + "'",
-        "unset it to date programs now, or give e.g. SOURCE_DATE_EPOCH=0");
-  return static_cast<std::time_t>(seconds);
-}
-
-const ExporterPlugin& exporterFor(const PluginRegistry& registry, const std::string& format)
-{
-  const std::string id = format.find('.') == std::string::npos ? "export." + format : format;
-  const Plugin* p = registry.find(id);
-  if (!p || p->kind() != PluginKind::Exporter) {
-    std::string formats;
-    for (const Plugin* e : registry.ofKind(PluginKind::Exporter))
-      formats += (formats.empty() ? "" : ", ") + e->id().substr(e->id().find('.') + 1);
-    throw UsageError("unknown program format '" + format + "'", "use one of: " + formats);
-  }
-  return registry.exporter(id);
-}
-
 py::dict exportPlan(const PlannedPart& planned, py::object folder, py::object format,
                     const py::kwargs& kwargs)
 {
   const PluginRegistry& registry = builtinRegistry();
   const std::string outDir = pathArgument("export", "folder", folder);
   if (!py::isinstance<py::str>(format)) raiseTypeError("export", "format", "str", format);
-  const ExporterPlugin& exporter = exporterFor(registry, format.cast<std::string>());
+  const std::string formatName = format.cast<std::string>();
+  const ExporterPlugin* found = exporterForFormat(registry, formatName);
+  if (!found)
+    throw UsageError("unknown program format '" + formatName + "'",
+                     "use one of: " + exporterFormatList(registry));
+  const ExporterPlugin& exporter = *found;
   Options options("export", kwargs);
   // A project's stored exporter and preparation values, then the keywords over them (as 'spira-cli
   // export PROJECT' merges its flags).

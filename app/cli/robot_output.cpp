@@ -15,36 +15,10 @@
 
 namespace spira::cli {
 
-namespace {
-
-// When the program is written: now, or SOURCE_DATE_EPOCH (seconds since 1970-01-01 UTC, the
-// reproducible-builds convention) when set, so that the same plan gives byte-identical programs.
-std::time_t programTime()
-{
-  const char* epoch = std::getenv("SOURCE_DATE_EPOCH");
-  if (!epoch || !*epoch) return std::time(nullptr);
-  char* end = nullptr;
-  const long long seconds = std::strtoll(epoch, &end, 10);
-  if (*end != '\0' || seconds < 0)
-    throw UsageError(
-        "SOURCE_DATE_EPOCH must be a whole number of seconds since 1970, not '" + std::string(epoch) + "'",
-        "unset it to date programs now, or give e.g. SOURCE_DATE_EPOCH=0");
-  return static_cast<std::time_t>(seconds);
-}
-
-}  // namespace
-
 const ExporterPlugin& exporterFor(const PluginRegistry& registry, const std::string& format)
 {
-  const std::string id = format.find('.') == std::string::npos ? "export." + format : format;
-  const Plugin* p = registry.find(id);
-  if (!p || p->kind() != PluginKind::Exporter) {
-    std::string formats;
-    for (const Plugin* e : registry.ofKind(PluginKind::Exporter))
-      formats += (formats.empty() ? "" : ", ") + e->id().substr(e->id().find('.') + 1);
-    throw UsageError("unknown program format '" + format + "'", "use one of: " + formats);
-  }
-  return registry.exporter(id);
+  if (const ExporterPlugin* e = exporterForFormat(registry, format)) return *e;
+  throw UsageError("unknown program format '" + format + "'", "use one of: " + exporterFormatList(registry));
 }
 
 std::map<std::string, std::string> programHeader(const std::string& partFile, const std::string& cellFile,

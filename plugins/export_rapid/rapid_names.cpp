@@ -38,18 +38,10 @@ const ProgramNameRules& rapidNameRules()
   return rules;
 }
 
-bool isRapidIdentifier(const std::string& name)
-{
-  const ProgramNameRules& rules = rapidNameRules();
-  if (name.empty() || name.size() > rules.maxLength || !std::isalpha(static_cast<unsigned char>(name[0])))
-    return false;
-  for (char c : name)
-    if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_') || static_cast<unsigned char>(c) > 127)
-      return false;
-  return std::find(rules.reserved.begin(), rules.reserved.end(), upper(name)) == rules.reserved.end();
-}
+namespace {
 
-std::string rapidDataNameProblem(const std::string& name)
+// Why `name` is not a RAPID identifier (empty when it is one): RAPID's syntax and reserved words.
+std::string identifierProblem(const std::string& name)
 {
   const ProgramNameRules& rules = rapidNameRules();
   if (name.empty()) return "is empty";
@@ -61,6 +53,19 @@ std::string rapidDataNameProblem(const std::string& name)
       return "holds '" + std::string(1, c) + "'; RAPID names take letters, digits and '_' only";
   if (std::find(rules.reserved.begin(), rules.reserved.end(), upper(name)) != rules.reserved.end())
     return "is a RAPID reserved word";
+  return {};
+}
+
+}  // namespace
+
+bool isRapidIdentifier(const std::string& name)
+{
+  return identifierProblem(name).empty();
+}
+
+std::string rapidDataNameProblem(const std::string& name)
+{
+  if (std::string problem = identifierProblem(name); !problem.empty()) return problem;
   for (const char* predefined : {"TOOL0", "WOBJ0", "LOAD0", "FINE", "VMAX", "MAIN", "PAPPROACH", "PRETRACT"})
     if (upper(name) == predefined) return "is a name the controller or this program already uses";
   for (const char* prefix : {"v", "z", "p"})

@@ -14,4 +14,9 @@ namespace spira {
 std::map<std::string, std::string> programHeader(const std::string& part, const std::string& cell,
                                                  const PlanReportSummary& plan, std::time_t when);
 
+// When a program is written: now, or SOURCE_DATE_EPOCH (seconds since 1970-01-01 UTC, the
+// reproducible-builds convention) when set, so that the same plan gives byte-identical programs.
+// Throws InputError for a SOURCE_DATE_EPOCH that is not a whole number of seconds.
+std::time_t programTime();
+
 }  // namespace spira

@@ -115,4 +115,19 @@ const ImporterPlugin& PluginRegistry::importerForFile(const std::string& fileNam
                    "convert the part to one of: " + list);
 }
 
+const ExporterPlugin* exporterForFormat(const PluginRegistry& registry, const std::string& format)
+{
+  const std::string id = format.find('.') == std::string::npos ? "export." + format : format;
+  const Plugin* p = registry.find(id);
+  return p && p->kind() == PluginKind::Exporter ? &registry.exporter(id) : nullptr;
+}
+
+std::string exporterFormatList(const PluginRegistry& registry)
+{
+  std::string formats;
+  for (const Plugin* e : registry.ofKind(PluginKind::Exporter))
+    formats += (formats.empty() ? "" : ", ") + e->id().substr(e->id().find('.') + 1);
+  return formats;
+}
+
 }  // namespace spira

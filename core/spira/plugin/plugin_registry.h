@@ -39,6 +39,12 @@ class PluginRegistry {
   std::vector<std::unique_ptr<Plugin>> plugins_;
 };
 
+// The exporter a format name stands for: "krl", "rapid", "gcode" (its id without "export.") or a full id
+// ("export.krl"); null for anything else.
+const ExporterPlugin* exporterForFormat(const PluginRegistry& registry, const std::string& format);
+// The format names of the registered exporters, "krl, fanuc_tp, ...", for the message that refuses one.
+std::string exporterFormatList(const PluginRegistry& registry);
+
 // True for a valid plugin id: dotted lowercase words, e.g. "export.fanuc_tp".
 bool isValidPluginId(const std::string& id);
 
