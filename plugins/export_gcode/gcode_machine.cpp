@@ -115,14 +115,14 @@ bool isRotaryLetter(const std::string& s)
   return s == "A" || s == "B" || s == "C";
 }
 
-void checkTemplate(const MachineReader& r, const std::string& text, const char* key, const char* placeholder)
+void checkTemplate(const MachineReader& r, const std::string& text, const char* key, const char* field)
 {
   if (text.empty())
     r.fail("process", std::string("'") + key + "' is empty",
            "write the line the controller runs, e.g. \"M3\"");
-  if (placeholder && text.find(placeholder) == std::string::npos)
-    r.fail("process", std::string("'") + key + "' \"" + text + "\" has no " + placeholder,
-           std::string("put ") + placeholder + " where the number goes, e.g. \"S" + placeholder + "\"");
+  if (field && text.find(field) == std::string::npos)
+    r.fail("process", std::string("'") + key + "' \"" + text + "\" has no " + field,
+           std::string("put ") + field + " where the number goes, e.g. \"S" + field + "\"");
   if (text.find('\n') != std::string::npos || text.find('\r') != std::string::npos)
     r.fail("process", std::string("'") + key + "' holds a line break",
            "write one line; two commands can share it");

@@ -17,12 +17,11 @@ constexpr double kShortestMoveS = 1e-3;
 // Inverse-time feeds are small numbers (a 3 s move is F20): three places keep them within 0.01 %.
 constexpr int kInverseTimeDecimals = 3;
 
-std::string filled(const std::string& templ, const std::string& placeholder, const std::string& value)
+std::string filled(const std::string& templ, const std::string& field, const std::string& value)
 {
   std::string out = templ;
-  for (size_t at = out.find(placeholder); at != std::string::npos;
-       at = out.find(placeholder, at + value.size()))
-    out.replace(at, placeholder.size(), value);
+  for (size_t at = out.find(field); at != std::string::npos; at = out.find(field, at + value.size()))
+    out.replace(at, field.size(), value);
   return out;
 }
 
